@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Builds Camouflet (installing what is missing) and runs the default test suite
+# (everything but the "long" label), then regenerates docs/verification-report.md.
+# Long verification runs: scripts/test.sh -L long   (extra args go to ctest)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+scripts/setup.sh
+rm -rf build/verification
+args=("$@")
+[ ${#args[@]} -eq 0 ] && args=(-LE long)
+status=0
+ctest --test-dir build --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" "${args[@]}" || status=$?
+python3 scripts/verification_report.py build/verification docs/verification-report.md || true
+exit $status

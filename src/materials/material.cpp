@@ -1,0 +1,78 @@
+#include "materials/material.hpp"
+
+#include <stdexcept>
+
+namespace camouflet {
+
+Material::Material(std::string name, std::shared_ptr<const EquationOfState> eos,
+                   std::shared_ptr<const StrengthModel> strength, std::shared_ptr<const DamageModel> damage)
+    : name_(std::move(name)), eos_(std::move(eos)), strength_(std::move(strength)), damage_(std::move(damage)) {
+  if (!eos_) throw std::invalid_argument("material '" + name_ + "' has no equation of state");
+}
+
+void Material::setup(MaterialPoints& pts, std::size_t n) const {
+  eos_->register_state(pts);
+  if (strength_) strength_->register_state(pts);
+  if (damage_) damage_->register_state(pts);
+  pts.resize(n);
+  const double rho0 = eos_->reference_density();
+  const double e0 = eos_->reference_specific_energy();
+  for (std::size_t i = 0; i < n; ++i) {
+    pts.density[i] = rho0;
+    pts.density_previous[i] = rho0;
+    pts.specific_energy[i] = e0;
+    pts.temperature[i] = 300.0;
+  }
+  const MaterialContext ctx{};
+  eos_->evaluate(pts, ctx, false);
+  if (strength_) strength_->initialise(pts);
+}
+
+void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
+  const std::size_t n = pts.size();
+  const double dt = ctx.dt;
+
+  // Objective stress rate (Jaumann) and the first half of the deviatoric work,
+  // then the energy predictor: e* = e_n - (p_n + q) dv + s_n:D dt / rho.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    pts.deviator[i] += jaumann_increment(pts.deviator[i], pts.spin[i], dt);
+    const double rho = pts.density[i];
+    const double rho_mid = 0.5 * (rho + pts.density_previous[i]);
+    const double dv = 1.0 / rho - 1.0 / pts.density_previous[i];  // m^3/kg
+    const double dev_work = dt * contract(pts.deviator[i], pts.strain_rate[i]) / rho_mid;
+    pts.specific_energy_start[i] = pts.specific_energy[i];
+    pts.pressure_start[i] = pts.pressure[i];
+    pts.specific_energy[i] += -(pts.pressure[i] + pts.artificial_viscosity[i]) * dv + dev_work;
+  }
+  eos_->evaluate(pts, ctx, false);
+
+  // Corrector: trapezoidal p dv with the predicted pressure; the deviatoric
+  // work is completed after the strength update below.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double rho = pts.density[i];
+    const double rho_mid = 0.5 * (rho + pts.density_previous[i]);
+    const double dv = 1.0 / rho - 1.0 / pts.density_previous[i];
+    const double p_avg = 0.5 * (pts.pressure_start[i] + pts.pressure[i]);
+    const double half_dev_work = 0.5 * dt * contract(pts.deviator[i], pts.strain_rate[i]) / rho_mid;
+    pts.specific_energy[i] =
+        pts.specific_energy_start[i] - (p_avg + pts.artificial_viscosity[i]) * dv + half_dev_work;
+  }
+  eos_->evaluate(pts, ctx, true);
+
+  if (strength_) {
+    strength_->update(pts, ctx);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double rho_mid = 0.5 * (pts.density[i] + pts.density_previous[i]);
+      pts.specific_energy[i] += 0.5 * dt * contract(pts.deviator[i], pts.strain_rate[i]) / rho_mid;
+    }
+  } else {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) pts.deviator[i] = SymTensor{};
+  }
+  if (damage_) damage_->update(pts, ctx);
+}
+
+}  // namespace camouflet

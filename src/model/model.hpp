@@ -1,0 +1,146 @@
+#pragma once
+// The model a case file describes, in plain data: what the case reader builds
+// (case/), what the solver runs (solver/) and what `camouflet check` validates.
+// Dimension is a run-time value here; the solver instantiates Solver<2> or
+// Solver<3> from it. Units are SI throughout.
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "materials/material.hpp"
+
+namespace camouflet {
+
+enum class GeometryMode { plane_strain, axisymmetric, three_d };
+const char* to_string(GeometryMode mode);
+inline int dimension_of(GeometryMode mode) { return mode == GeometryMode::three_d ? 3 : 2; }
+
+enum class HourglassForm { viscous, stiffness, none };
+
+struct RunControl {
+  double end_time = 0.0;     // s
+  double cfl = 0.6;          // time step = cfl * min(length / (c + |v|))
+  double initial_dt = 0.0;   // s; 0 = from the CFL condition
+  double max_dt = std::numeric_limits<double>::infinity();  // s
+  double min_dt = 0.0;       // s; a step below it stops the run (time step collapse)
+  std::int64_t max_cycles = std::numeric_limits<std::int64_t>::max();
+  double dt_growth = 1.1;    // largest ratio dt(n+1)/dt(n)
+  GeometryMode mode = GeometryMode::plane_strain;
+  // Artificial bulk viscosity q = rho l (c_quadratic^2 l |tr D| - c_linear c) tr D, compression only.
+  double viscosity_quadratic = 1.5;
+  double viscosity_linear = 0.06;
+  HourglassForm hourglass = HourglassForm::viscous;
+  double hourglass_coefficient = 0.1;
+  double energy_error_limit = std::numeric_limits<double>::infinity();  // relative; stop when exceeded
+  SourceLocation where;
+};
+
+struct OutputControl {
+  double field_interval = 0.0;   // s between field snapshots; 0 = first and last only
+  double gauge_interval = 0.0;   // s between gauge rows; 0 = every cycle
+  double log_interval_s = 5.0;   // wall seconds between plain log lines when not on a terminal
+};
+
+// A FEM mesh: quad4 in 2-D, hex8 in 3-D. Node and element ids are 0-based
+// indices here; user-facing ids (messages, output) are 1-based.
+struct FemMesh {
+  int dimension = 2;
+  int nodes_per_element = 4;
+  std::vector<double> coordinates;           // n_nodes * dimension, m
+  std::vector<std::int64_t> connectivity;    // n_elements * nodes_per_element, counter-clockwise (2-D)
+  std::vector<int> element_part;             // index into Model::parts
+  std::map<std::string, std::vector<std::int64_t>> node_sets;  // named boundaries / groups of nodes
+  // Named sets of boundary faces (2 nodes in 2-D, 4 in 3-D), outward normal by node order.
+  std::map<std::string, std::vector<std::int64_t>> face_sets;
+
+  std::size_t node_count() const { return coordinates.size() / static_cast<std::size_t>(dimension); }
+  std::size_t element_count() const {
+    return connectivity.size() / static_cast<std::size_t>(nodes_per_element);
+  }
+};
+
+// SPH particles (filled by the SPH issue's generators).
+struct ParticleSet {
+  std::vector<double> coordinates;        // n * dimension, m
+  std::vector<double> volume;             // m^3 (axisymmetric: ring volume 2 pi r A)
+  std::vector<double> spacing;            // m, initial particle spacing
+  std::vector<int> particle_part;         // index into Model::parts
+  std::size_t count() const { return volume.size(); }
+};
+
+enum class PartKind { fem, sph };
+
+struct Part {
+  std::string name;
+  PartKind kind = PartKind::fem;
+  int material = -1;                        // index into Model::materials
+  std::array<double, 3> initial_velocity{};  // m/s
+  SourceLocation where;
+};
+
+struct NamedMaterial {
+  std::string name;
+  std::shared_ptr<const Material> material;
+  SourceLocation where;
+};
+
+// A piecewise-linear function of time (load or velocity histories).
+struct TimeHistory {
+  std::vector<double> time;   // s, increasing
+  std::vector<double> value;  // scale factor or value
+  double at(double t) const;  // linear interpolation; constant beyond the ends
+};
+
+enum class BoundaryKind {
+  fixed,        // all velocity components zero
+  velocity,     // prescribed velocity components (others free)
+  symmetry,     // zero normal velocity on a plane
+  axis,         // axis of revolution r = 0 (axisymmetric): zero radial velocity
+  pressure,     // pressure load on a face set (compression positive, acts against the outward normal)
+  transmitting  // non-reflecting viscous boundary on a face set (coupling issue)
+};
+
+struct BoundaryCondition {
+  BoundaryKind kind = BoundaryKind::fixed;
+  std::string set;                        // node set (fixed/velocity/symmetry/axis) or face set
+  std::array<bool, 3> components{};       // velocity: which components are prescribed
+  std::array<double, 3> value{};          // velocity (m/s) or, for pressure, the magnitude (Pa) in value[0]
+  std::array<double, 3> normal{};         // symmetry: plane normal
+  std::optional<TimeHistory> history;     // scale factor over time (1 when absent)
+  SourceLocation where;
+};
+
+struct GaugePoint {
+  std::string name;
+  std::array<double, 3> position{};  // m, initial (Lagrangian: it moves with the material)
+  SourceLocation where;
+};
+
+struct GaugeGroup {
+  std::string name;
+  std::vector<GaugePoint> points;
+  SourceLocation where;
+};
+
+struct Model {
+  std::string case_file;  // path as given
+  std::string title;
+  RunControl run;
+  OutputControl output;
+  std::vector<NamedMaterial> materials;
+  std::vector<Part> parts;
+  FemMesh mesh;
+  ParticleSet particles;
+  std::vector<BoundaryCondition> boundaries;
+  std::vector<GaugeGroup> gauges;
+
+  int dimension() const { return dimension_of(run.mode); }
+};
+
+}  // namespace camouflet

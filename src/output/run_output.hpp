@@ -1,0 +1,49 @@
+#pragma once
+// Everything a run writes into its output folder (architecture.md,
+// "Contracts"): the case as read, gauge CSVs (one per group, `time_s` first),
+// VTK XML field snapshots with a .pvd index, and summary.json. The solver
+// calls it; it never reaches into solver types.
+#include <memory>
+
+#include "output/snapshot.hpp"
+#include "solver/run.hpp"
+
+namespace camouflet {
+
+class RunOutput {
+ public:
+  // Locates every gauge in the initial configuration (InputError naming the
+  // gauge's key when it lies outside the mesh and every particle support),
+  // creates the folder, copies the case file, writes the first snapshot and
+  // gauge row. With an empty options.output_dir gauges are still sampled
+  // (tests read them through gauge_peaks()) but nothing is written.
+  RunOutput(const Model& model, const RunOptions& options, const FieldSnapshot& initial);
+  ~RunOutput();
+  RunOutput(const RunOutput&) = delete;
+  RunOutput& operator=(const RunOutput&) = delete;
+
+  // Called after every cycle; samples gauges and writes snapshots when their
+  // intervals have elapsed.
+  void after_cycle(const FieldSnapshot& state);
+
+  // Final snapshot, last gauge row and summary.json (also after a failure).
+  void finish(const FieldSnapshot& final_state, const RunSummary& summary);
+
+  // Gauge histories recorded so far, for tests and the summary:
+  // columns[quantity name][gauge index] over sample times.
+  struct GaugeSeries {
+    std::string group;
+    std::vector<std::string> gauge_names;
+    std::vector<std::string> quantities;  // e.g. "velocity_x", "stress_xx", "pressure"
+    std::vector<double> time;             // s
+    // values[q][g][k]: quantity q of gauge g at sample k
+    std::vector<std::vector<std::vector<double>>> values;
+  };
+  const std::vector<GaugeSeries>& gauges() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace camouflet

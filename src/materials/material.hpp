@@ -4,12 +4,21 @@
 // Every call works on a whole batch (all points of the material): one virtual
 // call per batch, never per point. The same Material::update serves FEM
 // integration points, SPH particles and the material-point driver.
+#include <array>
 #include <memory>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "materials/material_points.hpp"
 
 namespace camouflet {
+
+// Where and when an explosive is lit (programmed burn, issue 4).
+struct DetonationPoint {
+  std::array<double, 3> position{};  // m (2-D: third component 0)
+  double time = 0.0;                 // s, lighting time of the point itself
+};
 
 struct MaterialContext {
   double dt = 0.0;    // s, this step
@@ -31,6 +40,11 @@ class EquationOfState {
   // the energy equation) it must leave history untouched; with commit == true
   // it may advance history (compaction, burn ...). Called twice per step.
   virtual void evaluate(MaterialPoints& pts, const MaterialContext& ctx, bool commit) const = 0;
+  // Called once after the points are placed, with each point's initial
+  // position (m; 2-D padded with 0) and the model's detonation points:
+  // explosives set their lighting times here. Default: nothing.
+  virtual void place(MaterialPoints& /*pts*/, std::span<const std::array<double, 3>> /*positions*/,
+                     const std::vector<DetonationPoint>& /*detonations*/) const {}
 };
 
 class StrengthModel {

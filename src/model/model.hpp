@@ -139,6 +139,8 @@ struct Model {
   ParticleSet particles;
   std::vector<BoundaryCondition> boundaries;
   std::vector<GaugeGroup> gauges;
+  std::vector<DetonationPoint> detonations;
+  std::vector<SourceLocation> detonation_where;  // same order as detonations
 
   int dimension() const { return dimension_of(run.mode); }
 };

@@ -24,9 +24,10 @@ void require_coupling(double f) {
 }
 
 // ∫_{R1}^{R2} R^-m dR, written with expm1 so that m -> 1 (the logarithm) is
-// reached smoothly: displacement with n = 2 has m = n - 1 = 1 exactly.
+// reached smoothly: displacement with n = 2 has m = n - 1 = 1 exactly. log1p
+// keeps a narrow span (R2 - R1 << R1) accurate.
 double power_integral(double m, double r1, double r2) {
-  const double log_ratio = std::log(r2 / r1);
+  const double log_ratio = std::log1p((r2 - r1) / r1);
   const double x = (1.0 - m) * log_ratio;
   const double base = std::pow(r1, 1.0 - m);
   if (std::abs(x) < 1e-8) return base * log_ratio * (1.0 + 0.5 * x);

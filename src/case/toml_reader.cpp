@@ -43,6 +43,18 @@ void TomlReader::fail(const std::string& key, const std::string& message) const 
   throw InputError(where(key), message);
 }
 
+void TomlReader::missing(const std::string& key) const {
+  // A required key that is absent is most often misspelt: point at the typo.
+  for (const auto& [name, value] : table_) {
+    const std::string k(name.str());
+    if (used_.count(k) || known_.count(k)) continue;
+    if (nearest(k, {key}) == key)
+      throw InputError(location_of(value, file_, key_path(k)),
+                       fmt::format("unknown key; did you mean '{}'?", key));
+  }
+  fail(key, "required key is missing");
+}
+
 void TomlReader::allow(std::initializer_list<const char*> keys) {
   for (const char* k : keys) known_.insert(k);
 }
@@ -61,7 +73,7 @@ const toml::node* TomlReader::node(const std::string& key) {
 
 double TomlReader::number(const std::string& key) {
   const toml::node* n = node(key);
-  if (!n) fail(key, "required key is missing");
+  if (!n) missing(key);
   const auto v = as_number(*n);
   if (!v) fail(key, "expected a number");
   if (!std::isfinite(*v)) fail(key, "must be a finite number");
@@ -97,7 +109,7 @@ std::int64_t TomlReader::integer(const std::string& key, std::int64_t fallback) 
 
 std::string TomlReader::string(const std::string& key) {
   const toml::node* n = node(key);
-  if (!n) fail(key, "required key is missing");
+  if (!n) missing(key);
   if (!n->is_string()) fail(key, "expected a string");
   return n->as_string()->get();
 }
@@ -119,7 +131,7 @@ std::string TomlReader::choice(const std::string& key, const std::vector<std::st
 
 std::vector<double> TomlReader::numbers(const std::string& key) {
   const toml::node* n = node(key);
-  if (!n) fail(key, "required key is missing");
+  if (!n) missing(key);
   const toml::array* a = n->as_array();
   if (!a) fail(key, "expected a list of numbers");
   std::vector<double> out;

@@ -65,6 +65,7 @@ class TomlReader {
   Parameters parameters();
 
  private:
+  [[noreturn]] void missing(const std::string& key) const;
   const toml::table& table_;
   std::string file_;
   std::string path_;

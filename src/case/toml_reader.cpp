@@ -213,6 +213,7 @@ Parameters TomlReader::parameters() {
     used_.insert(k);
     const SourceLocation w = location_of(value, file_, key_path(k));
     if (const auto v = as_number(value)) {
+      if (!std::isfinite(*v)) throw InputError(w, "must be a finite number");
       p.set_number(k, *v, w);
     } else if (value.is_string()) {
       p.set_string(k, value.as_string()->get(), w);
@@ -223,6 +224,7 @@ Parameters TomlReader::parameters() {
       for (const auto& item : *a) {
         const auto v = as_number(item);
         if (!v) throw InputError(w, "expected a number, a string, true/false or a list of numbers");
+        if (!std::isfinite(*v)) throw InputError(w, "must contain finite numbers");
         list.push_back(*v);
       }
       p.set_list(k, std::move(list), w);

@@ -71,3 +71,18 @@ TEST(EndToEnd, ElasticColumnExample) {
 
 }  // namespace
 }  // namespace camouflet
+
+namespace camouflet {
+namespace {
+
+TEST(EndToEnd, CheckPrintsSummaryAndExitsZero) {
+  const auto case_file = std::filesystem::path(CAMOUFLET_SOURCE_DIR) / "cases/examples/elastic_column.toml";
+  const auto r = test::run_camouflet("check '" + case_file.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(": OK"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("2211 nodes, 2000 elements"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("soil (linear, elastic, 2000 kg/m^3)"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace camouflet

@@ -40,8 +40,9 @@ inline double ring_weight(bool axisymmetric, const NodeValues<D>& x, double& r_b
   return 1.0;
 }
 
-// gamma_alpha,a = (Gamma_alpha,a - (Gamma_alpha . x_i) b_ia) / N: the hourglass
-// shape vectors orthogonal to every linear velocity field (FB 1981, eq. 56).
+// gamma_alpha,a = Gamma_alpha,a - (Gamma_alpha . x_i) b_ia: the hourglass shape
+// vectors orthogonal to every linear velocity field (FB 1981, eq. 56, without
+// their 1/N so that the coefficient has the scale of the LS-DYNA Q_hg).
 template <int D>
 inline void hourglass_shapes(const NodeValues<D>& x, const NodeValues<D>& b,
                              double (&g)[Shape<D>::modes][Shape<D>::nodes]) {
@@ -55,7 +56,7 @@ inline void hourglass_shapes(const NodeValues<D>& x, const NodeValues<D>& b,
     for (int a = 0; a < N; ++a) {
       double v = Shape<D>::base[m][a];
       for (int i = 0; i < D; ++i) v -= gx[i] * b[i][a];
-      g[m][a] = v / N;
+      g[m][a] = v;
     }
   }
 }
@@ -169,10 +170,10 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
         hourglass_shapes<D>(xe, b, g);
         const double rho = density[e], c = wave_speed[e];
         const double l = D == 2 ? std::sqrt(measure) : std::cbrt(measure);
-        // Viscous: a_h = kappa rho c l^(D-1); stiffness: k = kappa rho c^2 l^(D-2)
-        // (FB 1981 section 4, scaled so both act per unit mode amplitude).
-        const double coef = viscous_hg ? hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
-                                       : hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
+        // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
+        // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
+        const double coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
+                                       : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
         double* hd = &hourglass_displacement[e * modes * D];
         for (int a = 0; a < N; ++a)
           for (int i = 0; i < D; ++i) fh[i][a] = 0.0;

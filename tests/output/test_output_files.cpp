@@ -231,3 +231,21 @@ TEST(OutputFiles, UnwritableFolderIsAnIoError) {
 
 }  // namespace
 }  // namespace camouflet
+
+namespace camouflet {
+namespace {
+
+TEST(OutputFiles, RunningPeakKeepsLargestMagnitudeAndSkipsNaN) {
+  GroupPeaks p;
+  p.add(1, std::nan(""), 0.0);
+  p.add(1, 2.0, 1.0);
+  p.add(1, -3.0, 2.0);
+  p.add(1, std::nan(""), 3.0);
+  p.add(1, 2.5, 4.0);
+  EXPECT_EQ(p.peaks[1].value, -3.0);
+  EXPECT_EQ(p.peaks[1].time, 2.0);
+  EXPECT_EQ(json_string("a\"b\\c\n"), "\"a\\\"b\\\\c\\n\"");
+}
+
+}  // namespace
+}  // namespace camouflet

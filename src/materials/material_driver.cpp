@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -154,6 +155,20 @@ class PointDriver {
   std::vector<DriverRow> rows_;
 };
 
+// A one-point batch gains nothing from threads, and on a busy machine each
+// parallel region of Material::update costs far more than the point itself:
+// the driver runs single-threaded and restores the caller's setting.
+class SingleThreaded {
+ public:
+  SingleThreaded() : saved_(omp_get_max_threads()) { omp_set_num_threads(1); }
+  ~SingleThreaded() { omp_set_num_threads(saved_); }
+  SingleThreaded(const SingleThreaded&) = delete;
+  SingleThreaded& operator=(const SingleThreaded&) = delete;
+
+ private:
+  int saved_;
+};
+
 double lateral_stress(const MaterialPoints& p) {
   return 0.5 * (p.deviator[0].yy + p.deviator[0].zz) - p.pressure[0];
 }
@@ -202,6 +217,7 @@ std::vector<DriverRow> drive_material(const Material& material, const DriverSpec
   if (spec.steps < 1) throw std::invalid_argument("the driver needs at least one step");
   if (spec.strain_rate == 0.0 || !std::isfinite(spec.strain_rate))
     throw std::invalid_argument("the strain rate must be finite and non-zero");
+  const SingleThreaded single_threaded;
   PointDriver driver(material, spec);
   const double rate = spec.strain_rate;
   const bool to_pressure = spec.path == LoadPath::hydrostatic && spec.final_pressure > 0.0;

@@ -40,8 +40,9 @@ inline double ring_weight(bool axisymmetric, const NodeValues<D>& x, double& r_b
   return 1.0;
 }
 
-// gamma_alpha,a = (Gamma_alpha,a - (Gamma_alpha . x_i) b_ia) / N: the hourglass
-// shape vectors orthogonal to every linear velocity field (FB 1981, eq. 56).
+// gamma_alpha,a = Gamma_alpha,a - (Gamma_alpha . x_i) b_ia: the hourglass shape
+// vectors orthogonal to every linear velocity field (FB 1981, eq. 56, without
+// their 1/N so that the coefficient has the scale of the LS-DYNA Q_hg).
 template <int D>
 inline void hourglass_shapes(const NodeValues<D>& x, const NodeValues<D>& b,
                              double (&g)[Shape<D>::modes][Shape<D>::nodes]) {
@@ -55,7 +56,7 @@ inline void hourglass_shapes(const NodeValues<D>& x, const NodeValues<D>& b,
     for (int a = 0; a < N; ++a) {
       double v = Shape<D>::base[m][a];
       for (int i = 0; i < D; ++i) v -= gx[i] * b[i][a];
-      g[m][a] = v / N;
+      g[m][a] = v;
     }
   }
 }
@@ -121,16 +122,16 @@ double FemElements<D>::volume_of(const double* x, std::size_t e) const {
 }
 
 template <int D>
-ElementForceTotals FemElements<D>::add_internal_forces(const double* x, const double* v, double* f,
-                                                       const HourglassControl& hg, double dt_previous) {
+double FemElements<D>::add_internal_forces(const double* x, const double* v, double* f, double* f_hourglass,
+                                           const HourglassControl& hg, double dt_previous) {
   constexpr int N = nodes;
   const bool axi = axisymmetric_;
   const bool viscous_hg = hg.form == HourglassForm::viscous && hg.coefficient > 0.0;
   const bool stiff_hg = hg.form == HourglassForm::stiffness && hg.coefficient > 0.0;
-  double power = 0.0, stored = 0.0;
+  double stored = 0.0;
   for (const auto& colour : colours) {
     const std::int64_t count = static_cast<std::int64_t>(colour.size());
-#pragma omp parallel for schedule(static) reduction(+ : power, stored) if (count > parallel_threshold)
+#pragma omp parallel for schedule(static) reduction(+ : stored) if (count > parallel_threshold)
     for (std::int64_t k = 0; k < count; ++k) {
       const std::size_t e = static_cast<std::size_t>(colour[static_cast<std::size_t>(k)]);
       const std::int64_t* conn = &connectivity[e * N];
@@ -163,17 +164,19 @@ ElementForceTotals FemElements<D>::add_internal_forces(const double* x, const do
       }
 
       if (viscous_hg || stiff_hg) {
-        NodeValues<D> ve;
+        NodeValues<D> ve, fh;
         gather<D>(v, conn, ve);
         double g[Shape<D>::modes][N];
         hourglass_shapes<D>(xe, b, g);
         const double rho = density[e], c = wave_speed[e];
         const double l = D == 2 ? std::sqrt(measure) : std::cbrt(measure);
-        // Viscous: a_h = kappa rho c l^(D-1); stiffness: k = kappa rho c^2 l^(D-2)
-        // (FB 1981 section 4, scaled so both act per unit mode amplitude).
-        const double coef = viscous_hg ? hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
-                                       : hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
+        // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
+        // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
+        const double coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
+                                       : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
         double* hd = &hourglass_displacement[e * modes * D];
+        for (int a = 0; a < N; ++a)
+          for (int i = 0; i < D; ++i) fh[i][a] = 0.0;
         for (int m = 0; m < Shape<D>::modes; ++m)
           for (int i = 0; i < D; ++i) {
             double rate = 0.0;
@@ -181,13 +184,17 @@ ElementForceTotals FemElements<D>::add_internal_forces(const double* x, const do
             double amplitude;
             if (viscous_hg) {
               amplitude = rate;
-              power += coef * rate * rate;
             } else {
               hd[m * D + i] += rate * dt_previous;
               amplitude = hd[m * D + i];
               stored += 0.5 * coef * amplitude * amplitude;
             }
-            for (int a = 0; a < N; ++a) fe[i][a] -= coef * amplitude * g[m][a];
+            for (int a = 0; a < N; ++a) fh[i][a] -= coef * amplitude * g[m][a];
+          }
+        for (int a = 0; a < N; ++a)
+          for (int i = 0; i < D; ++i) {
+            fe[i][a] += fh[i][a];
+            if (f_hourglass) f_hourglass[conn[a] * D + i] += fh[i][a];
           }
       }
 
@@ -195,7 +202,7 @@ ElementForceTotals FemElements<D>::add_internal_forces(const double* x, const do
         for (int i = 0; i < D; ++i) f[conn[a] * D + i] += fe[i][a];
     }
   }
-  return {power, stored};
+  return stored;
 }
 
 template <int D>
@@ -271,7 +278,11 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
         div < 0.0
             ? rho * l * (visc.quadratic * visc.quadratic * l * -div + visc.linear * wave_speed[e]) * -div
             : 0.0;
-    viscous_work -= q * (vol - volume[e]);
+    // The force at t_n carried the previous q, the force at t_(n+1) carries
+    // this one; each acts over half of this step's volume change, so the
+    // energy equation is charged with their mean (time-centred q dV).
+    const double q_mean = 0.5 * (viscosity[e] + q);
+    viscous_work -= q_mean * (vol - volume[e]);
 
     MaterialPoints& pts = batches[static_cast<std::size_t>(material[e])];
     const std::size_t p = point[e];
@@ -279,7 +290,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
     pts.density[p] = rho;
     pts.strain_rate[p] = rate;
     pts.spin[p] = spin;
-    pts.artificial_viscosity[p] = q;
+    pts.artificial_viscosity[p] = q_mean;
     pts.characteristic_length[p] = l;
     volume[e] = vol;
     density[e] = rho;

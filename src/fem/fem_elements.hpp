@@ -25,12 +25,6 @@ struct ViscosityControl {
   double linear = 0.06;    // c_linear
 };
 
-// Sums over the elements of one force evaluation.
-struct ElementForceTotals {
-  double hourglass_power = 0.0;   // W, dissipated by the viscous hourglass form
-  double hourglass_stored = 0.0;  // J, held by the stiffness hourglass form
-};
-
 struct KinematicsResult {
   std::int64_t bad_element = -1;  // 0-based; first element with non-positive or non-finite volume
   double bad_volume = 0.0;
@@ -54,9 +48,12 @@ class FemElements {
 
   // f (n*D) += internal forces at the positions x (t_n), stresses `stress`
   // less q, and hourglass resistance from the velocities v (t_{n-1/2}).
-  // dt_previous advances the stiffness-form hourglass displacements.
-  ElementForceTotals add_internal_forces(const double* x, const double* v, double* f,
-                                         const HourglassControl& hg, double dt_previous);
+  // dt_previous advances the stiffness-form hourglass displacements. The
+  // hourglass forces alone are also added to f_hourglass (n*D) when it is
+  // not null, so the solver can charge the viscous form's work time-centred.
+  // Returns the energy held by the stiffness form at t_n (J; 0 otherwise).
+  double add_internal_forces(const double* x, const double* v, double* f, double* f_hourglass,
+                             const HourglassControl& hg, double dt_previous);
 
   // From x (t_{n+1}) and v (t_{n+1/2}): new volume and density, strain rate
   // and spin at mid-step, q, characteristic length and speed; written into

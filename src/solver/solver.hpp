@@ -71,7 +71,9 @@ class Solver {
 
   // Nodes (SoA, n * D each).
   std::vector<double> position_, velocity_, velocity_old_, acceleration_, force_, displacement_;
-  std::vector<double> node_mass_;  // kg (plane strain: per metre of depth)
+  std::vector<double> hourglass_force_;           // N, the viscous hourglass part of force_ at t_n
+  std::vector<double> hourglass_force_previous_;  // N, the same at t_(n-1) (empty without viscous control)
+  std::vector<double> node_mass_;                 // kg (plane strain: per metre of depth)
 
   FemElements<D> elements_;
   std::vector<MaterialPoints> batches_;  // one per Model::materials entry
@@ -86,14 +88,11 @@ class Solver {
   std::int64_t cycle_ = 0;
   double dt_ = 0.0;       // s, the step just taken (t_{n-1/2})
   double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
-  double dt_cap_ = 0.0;   // s, limit_next_step(); 0 = none
   TimeStepLimit limit_;
   EnergyBalance energy_;
-  double internal_energy_ = 0.0;   // J, sum m e at t_n
-  double hourglass_stored_ = 0.0;  // J, stiffness form at t_n
-  double hourglass_power_ = 0.0;   // W, viscous form at t_n
-  double hourglass_dissipated_ = 0.0;
-  double loads_work_step_ = 0.0;
+  double internal_energy_ = 0.0;       // J, sum m e at t_n
+  double hourglass_stored_ = 0.0;      // J, stiffness-form hourglass energy at t_n
+  double hourglass_dissipated_ = 0.0;  // J, work absorbed by the viscous form
 };
 
 extern template class Solver<2>;

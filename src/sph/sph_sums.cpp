@@ -126,11 +126,17 @@ void SphSystem<D>::compute_accelerations() {
 }
 
 template <int D>
-void SphSystem<D>::advance(double dt) {
+void SphSystem<D>::kick(double dt) {
   const std::size_t n = p_.real;
-  correction_current_ = false;
+  velocity_old_.assign(p_.velocity.begin(), p_.velocity.begin() + static_cast<std::ptrdiff_t>(n));
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p_.velocity[i] += p_.acceleration[i] * dt;
+}
+
+template <int D>
+void SphSystem<D>::drift(double dt) {
+  const std::size_t n = p_.real;
+  correction_current_ = false;
   std::vector<Vec<D>> shift(n);
   if (options_.xsph > 0.0) {
     // XSPH (Monaghan 1989): move with the velocity smoothed over neighbours.
@@ -307,8 +313,10 @@ template void SphSystem<2>::compute_correction();
 template void SphSystem<3>::compute_correction();
 template void SphSystem<2>::compute_accelerations();
 template void SphSystem<3>::compute_accelerations();
-template void SphSystem<2>::advance(double);
-template void SphSystem<3>::advance(double);
+template void SphSystem<2>::kick(double);
+template void SphSystem<3>::kick(double);
+template void SphSystem<2>::drift(double);
+template void SphSystem<3>::drift(double);
 template void SphSystem<2>::update_state(double, double);
 template void SphSystem<3>::update_state(double, double);
 

@@ -211,6 +211,14 @@ double SphSystem<D>::kinetic_energy() const {
 }
 
 template <int D>
+double SphSystem<D>::centred_kinetic_energy() const {
+  if (velocity_old_.size() != p_.real) return kinetic_energy();
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.real; ++i) e += 0.5 * p_.mass[i] * dot(velocity_old_[i], p_.velocity[i]);
+  return e;
+}
+
+template <int D>
 double SphSystem<D>::internal_energy() const {
   double e = 0.0;
   for (std::size_t i = 0; i < p_.real; ++i)

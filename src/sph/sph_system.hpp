@@ -105,7 +105,14 @@ class SphSystem {
 
   // --- stages of the cycle ---
   void compute_accelerations();
-  void advance(double dt);
+  void advance(double dt) {
+    kick(dt);
+    drift(dt);
+  }
+  // The two halves of advance() for a driver with variable steps (the solver):
+  // kick spans the impulse at t_n (mean of the two half steps), drift the new step.
+  void kick(double dt);
+  void drift(double dt);
   void update_state(double dt, double time);
   // One whole cycle for pure-SPH runs and tests: advance, update_state, compute_accelerations.
   // Call compute_accelerations() once before the first step.
@@ -115,7 +122,9 @@ class SphSystem {
   // section 10), the smallest over particles, without the CFL factor; the reason names the particle.
   TimeStepLimit stable_time_step() const;
 
-  double kinetic_energy() const;   // J (axisymmetric: full revolution)
+  double kinetic_energy() const;  // J (axisymmetric: full revolution)
+  // Time-centred kinetic energy at t_n, 1/2 m v(n-1/2) . v(n+1/2) (after kick()).
+  double centred_kinetic_energy() const;
   double internal_energy() const;  // J
   Vec<D> momentum() const;         // kg m/s
 
@@ -156,6 +165,7 @@ class SphSystem {
   double skin_ = 0.0;
   double ghost_reach_ = 0.0;
   ParticleArrays<D> p_;
+  std::vector<Vec<D>> velocity_old_;  // v(n-1/2), kept by kick() for the centred kinetic energy
   std::vector<std::shared_ptr<const Material>> materials_;   // by Model::materials index
   std::vector<MaterialPoints> batches_;                      // by Model::materials index
   std::vector<std::vector<std::uint32_t>> batch_particles_;  // particle of each slot

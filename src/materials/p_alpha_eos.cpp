@@ -196,7 +196,7 @@ void PAlphaEos::evaluate(MaterialPoints& pts, const MaterialContext& /*ctx*/, bo
   double* alpha_p = pts.history.column(pts.history.slot(kPlasticDistension));
   std::atomic<long> failed{-1};
   std::string failure;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
     try {
       const PAlphaState st = solve(pts.density[i], pts.specific_energy[i], alpha_p[i], static_cast<long>(i));

@@ -41,7 +41,7 @@ void RhtStrength::update(MaterialPoints& pts, const MaterialContext& ctx) const 
   double* rate_column = pts.history.column(pts.history.slot(kStrainRate));
   std::atomic<long> failed{-1};
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
     const double g = pts.shear_modulus[i];  // from the damage at the start of the step (eq. 31)
     const double damage0 = pts.damage[i];

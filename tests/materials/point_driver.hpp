@@ -3,6 +3,8 @@
 // steps, and mixed steps (axial strain given, the two lateral stresses held)
 // for uniaxial stress and triaxial paths. Stand-in for the shared
 // material_driver of branch materials-jc until that lands.
+#include <omp.h>
+
 #include <cmath>
 #include <memory>
 
@@ -13,6 +15,9 @@ namespace camouflet::test {
 class PointDriver {
  public:
   explicit PointDriver(std::shared_ptr<const Material> material) : material_(std::move(material)) {
+    // One point: worker threads would only add barrier costs (large on a
+    // loaded machine), so the driver runs the update single-threaded.
+    omp_set_num_threads(1);
     material_->setup(pts_, 1);
   }
 

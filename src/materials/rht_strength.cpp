@@ -88,13 +88,18 @@ void RhtStrength::update(MaterialPoints& pts, const MaterialContext& ctx) const 
       // Radial return: q_trial - 3 G dl = Y(dl), bracketed in [0, q_trial / 3G].
       auto residual = [&](double x) { return q_trial - 3.0 * g * x - strength(x); };
       const double hi = q_trial / (3.0 * g);
-      const RootResult r = bracketed_root(residual, 0.0, hi, r0, residual(hi), 1e-14 * hi);
-      if (!r.converged) {
-        long expected = -1;
-        failed.compare_exchange_strong(expected, static_cast<long>(i));
-        continue;
+      const double r_hi = residual(hi);
+      if (r_hi >= 0.0) {
+        dl = hi;  // no strength left at this pressure (beyond the tensile limit): return to s = 0
+      } else {
+        const RootResult r = bracketed_root(residual, 0.0, hi, r0, r_hi, 1e-14 * hi);
+        if (!r.converged) {
+          long expected = -1;
+          failed.compare_exchange_strong(expected, static_cast<long>(i));
+          continue;
+        }
+        dl = r.x;
       }
-      dl = r.x;
       s = trial * std::max(0.0, (q_trial - 3.0 * g * dl) / q_trial);
     }
     const double damage = damage_after(dl);

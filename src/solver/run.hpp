@@ -23,9 +23,9 @@ struct EnergyBalance {
   double kinetic = 0.0;
   double internal = 0.0;
   double hourglass = 0.0;
-  double viscous = 0.0;         // dissipated by artificial viscosity (contained in internal)
-  double boundary_work = 0.0;   // work done on the model by boundary forces and loads
-  double initial_total = 0.0;   // kinetic + internal at t = 0
+  double viscous = 0.0;        // dissipated by artificial viscosity (contained in internal)
+  double boundary_work = 0.0;  // work done on the model by boundary forces and loads
+  double initial_total = 0.0;  // kinetic + internal at t = 0
   // |E_kin + E_int + E_hg - E_0 - W_boundary| / max(E_0 + |W_boundary|, E_kin + E_int + E_hg)
   double relative_error = 0.0;
 };
@@ -36,12 +36,12 @@ struct TimeStepLimit {
 };
 
 struct RunSummary {
-  double time = 0.0;          // s, final simulated time
+  double time = 0.0;  // s, final simulated time
   std::int64_t cycles = 0;
   double wall_seconds = 0.0;
   EnergyBalance energy;
   TimeStepLimit last_limit;
-  std::string stop_reason;    // "end time reached", "max cycles reached", or the failure
+  std::string stop_reason;  // "end time reached", "max cycles reached", or the failure
   bool failed = false;
 };
 

@@ -23,13 +23,13 @@ MaterialPreset concrete_35mpa_wang2005() {
   e.set_number("compaction_pressure", 6.0e9);
   e.set_number("compaction_exponent", 3.0);
   e.set_number("porous_sound_speed", 2920.0);
-  e.set_number("A1", 35.27e9);
-  e.set_number("A2", 39.58e9);
-  e.set_number("A3", 9.04e9);
-  e.set_number("T1", 35.27e9);
-  e.set_number("T2", 0.0);
-  e.set_number("B0", 1.22);
-  e.set_number("B1", 1.22);
+  e.set_number("a1", 35.27e9);
+  e.set_number("a2", 39.58e9);
+  e.set_number("a3", 9.04e9);
+  e.set_number("t1", 35.27e9);
+  e.set_number("t2", 0.0);
+  e.set_number("b0", 1.22);
+  e.set_number("b1", 1.22);
 
   Parameters& s = p.strength;
   s.set_string("type", "rht");

@@ -228,18 +228,20 @@ std::shared_ptr<const EquationOfState> make_p_alpha_eos(Parameters& b) {
     b.fail("compaction_pressure", fmt::format("must exceed crush_pressure ({} Pa), got {}", p.crush_pressure,
                                               p.compaction_pressure));
   p.compaction_exponent = b.positive("compaction_exponent");
-  p.a1 = b.positive("A1");
-  p.a2 = b.number("A2");
-  p.a3 = b.number("A3");
-  p.t1 = b.positive("T1");
-  p.t2 = b.number("T2", 0.0);
-  p.b0 = b.non_negative("B0", 0.0);
-  p.b1 = b.non_negative("B1", 0.0);
+  // Same keys as the plain polynomial EOS (polynomial_eos.cpp): t1 defaults
+  // to a1 and t2 to 0, as in Autodyn.
+  p.a1 = b.positive("a1");
+  p.a2 = b.number("a2");
+  p.a3 = b.number("a3");
+  p.t1 = b.positive("t1", p.a1);
+  p.t2 = b.number("t2", 0.0);
+  p.b0 = b.non_negative("b0", 0.0);
+  p.b1 = b.non_negative("b1", 0.0);
   p.porous_sound_speed = b.positive("porous_sound_speed");
   const double c_solid = std::sqrt(p.a1 / p.solid_density);
   if (p.porous_sound_speed > c_solid)
     b.fail("porous_sound_speed",
-           fmt::format("must not exceed the matrix sound speed sqrt(A1/solid_density) = {:.1f} m/s, got {}",
+           fmt::format("must not exceed the matrix sound speed sqrt(a1/solid_density) = {:.1f} m/s, got {}",
                        c_solid, p.porous_sound_speed));
   return std::make_shared<PAlphaEos>(p);
 }

@@ -1,11 +1,13 @@
 #pragma once
 // Load paths for the RHT concrete tests: triaxial (confined) compression or
-// extension and uniaxial stress, with the peak and the softened end state.
+// extension and uniaxial stress through drive_material, with the peak and the
+// softened end state.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "concrete_fixture.hpp"
-#include "point_driver.hpp"
+#include "materials/material_driver.hpp"
 
 namespace camouflet::test {
 
@@ -17,42 +19,42 @@ struct PathResult {
   double final_axial = 0.0;       // Pa, axial stress at the end of the path
   double final_pressure = 0.0;    // Pa
   double final_damage = 0.0;
-  double worst_lateral_misfit = 0.0;  // Pa
 };
 
-// Hydrostatic loading to `confinement` (Pa), then axial strain steps `dexx`
-// (negative: compression) at axial strain rate `rate` with the lateral
-// stress held, until the damage reaches 1 or `max_steps`. After the peak the
-// steps grow by `post_peak_factor` to reach full damage quickly, or the
-// path stops there (`stop_after_peak`).
-inline PathResult run_axial_path(double confinement, double dexx, double rate, int max_steps,
-                                 double post_peak_factor = 1.0, bool stop_after_peak = false) {
-  PointDriver d(concrete_35mpa());
-  const double dt = std::abs(dexx) / rate;
-  while (d.pressure() < confinement) d.strain_step(SymTensor::isotropic(-1e-5), dt);
-  const double lateral = confinement > 0.0 ? -d.pressure() : 0.0;
-  const std::size_t rate_slot = d.points().history.slot("rht_strain_rate");
+// Triaxial path through the shared material-point driver: hydrostatic
+// loading to `confinement` (Pa; 0 gives uniaxial stress), then `steps` axial
+// steps at axial rate `rate` (1/s; negative: compression) up to
+// `final_strain`, the lateral stress held. The peak, the equivalent strain
+// rate there (from the strain increments of the rows) and the end state.
+// A fully damaged point in tension carries no stress at all, so the held
+// lateral stress there needs a looser (relative, floor 1 Pa) tolerance.
+inline PathResult run_axial_path(double confinement, double rate, double final_strain, int steps,
+                                 double stress_tolerance = 1e-9) {
+  DriverSpec spec;
+  spec.path = confinement > 0.0 ? LoadPath::triaxial : LoadPath::uniaxial_stress;
+  spec.strain_rate = rate;
+  spec.final_strain = final_strain;
+  spec.confining_pressure = confinement;
+  spec.steps = steps;
+  spec.stress_tolerance = stress_tolerance;
+  const std::vector<DriverRow> rows = drive_material(*concrete_35mpa(), spec);
   PathResult r;
-  bool past_peak = false;
-  for (int k = 0; k < max_steps; ++k) {
-    const double step = past_peak ? dexx * post_peak_factor : dexx;
-    const double misfit = d.axial_step(step, lateral, past_peak ? dt * post_peak_factor : dt);
-    r.worst_lateral_misfit = std::max(r.worst_lateral_misfit, std::abs(misfit));
-    const double q = std::abs(d.axial_stress() - d.lateral_stress());
-    if (q > r.peak_q) {
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    const DriverRow& row = rows[k];
+    const double q = std::abs(row.stress.xx - row.stress.yy);
+    if (q > r.peak_q && row.axial_strain != rows[k - 1].axial_strain) {
       r.peak_q = q;
-      r.pressure_at_peak = d.pressure();
-      r.axial_at_peak = d.axial_stress();
-      r.rate_at_peak = d.points().history.column(rate_slot)[0];
-    } else if (d.points().damage[0] > 0.05) {
-      past_peak = true;
-      if (stop_after_peak) break;
+      r.pressure_at_peak = row.pressure;
+      r.axial_at_peak = row.stress.xx;
+      const double dt = row.time - rows[k - 1].time;
+      const double d_axial = (row.axial_strain - rows[k - 1].axial_strain) / dt;
+      const double d_lateral = 0.5 * ((row.volumetric_strain - rows[k - 1].volumetric_strain) / dt - d_axial);
+      r.rate_at_peak = std::sqrt(2.0 / 3.0 * (d_axial * d_axial + 2.0 * d_lateral * d_lateral));
     }
-    if (d.points().damage[0] >= 1.0) break;
   }
-  r.final_axial = d.axial_stress();
-  r.final_pressure = d.pressure();
-  r.final_damage = d.points().damage[0];
+  r.final_axial = rows.back().stress.xx;
+  r.final_pressure = rows.back().pressure;
+  r.final_damage = rows.back().damage;
   return r;
 }
 

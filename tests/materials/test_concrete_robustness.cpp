@@ -80,7 +80,7 @@ TEST(ConcreteRobustness, BadParametersNameTheirKey) {
   EXPECT_EQ(refused_key("eos", "solid_density", 2000.0), "solid_density");
   EXPECT_EQ(refused_key("eos", "compaction_pressure", 1e6), "compaction_pressure");
   EXPECT_EQ(refused_key("eos", "porous_sound_speed", 5000.0), "porous_sound_speed");
-  EXPECT_EQ(refused_key("eos", "A1", -1.0), "A1");
+  EXPECT_EQ(refused_key("eos", "a1", -1.0), "a1");
   EXPECT_EQ(refused_key("strength", "tensile_strength", 50e6), "tensile_strength");
   EXPECT_EQ(refused_key("strength", "tensile_meridian_ratio", 1.5), "tensile_meridian_ratio");
   EXPECT_EQ(refused_key("strength", "residual_shear_modulus", 20e9), "residual_shear_modulus");

@@ -19,7 +19,7 @@ constexpr double quasi_static = 1e-6;  // 1/s: below both reference rates, F_rat
 
 TEST(RhtStrength, TriaxialCompressionPeaksOnTheCompressiveMeridian) {
   for (const double confinement : {5e6, 20e6, 50e6, 100e6}) {
-    const test::PathResult r = test::run_axial_path(confinement, -1e-5, quasi_static, 3000, 1.0, true);
+    const test::PathResult r = test::run_axial_path(confinement, -quasi_static, -0.01, 1000);
     verify({fmt::format("RHT triaxial compression, confinement {} MPa: peak sqrt(3 J2)", confinement / 1e6),
             "compressive meridian Y_TXC(p) = f_c A (p* + f_t*)^N at the peak pressure (eq. 24)",
             ref.txc(r.pressure_at_peak), r.peak_q, 0.02, true, "Pa"});
@@ -28,7 +28,7 @@ TEST(RhtStrength, TriaxialCompressionPeaksOnTheCompressiveMeridian) {
 
 TEST(RhtStrength, TriaxialExtensionPeakMatchesTheTensileMeridianRatio) {
   // Confinement chosen so that the peak falls at p* close to 1/3.
-  const test::PathResult r = test::run_axial_path(19.3e6, 1e-5, quasi_static, 3000, 1.0, true);
+  const test::PathResult r = test::run_axial_path(19.3e6, quasi_static, 0.004, 800);
   const double p_star = r.pressure_at_peak / ref.fc;
   std::printf("triaxial extension peak at p* = %.4f\n", p_star);
   EXPECT_NEAR(p_star, 1.0 / 3.0, 0.03);
@@ -38,7 +38,7 @@ TEST(RhtStrength, TriaxialExtensionPeakMatchesTheTensileMeridianRatio) {
 }
 
 TEST(RhtStrength, UniaxialCompressionPeakAndSoftening) {
-  const test::PathResult r = test::run_axial_path(0.0, -1e-5, quasi_static, 4000, 10.0);
+  const test::PathResult r = test::run_axial_path(0.0, -quasi_static, -0.03, 3000);
   const double expected = ref.uniaxial_compression();
   std::printf(
       "uniaxial compression: peak %.3f MPa (%.4f f_c; closed form %.4f f_c; Y_TXC(p* = 1/3) = %.4f f_c)\n",
@@ -56,7 +56,7 @@ TEST(RhtStrength, UniaxialCompressionPeakAndSoftening) {
 }
 
 TEST(RhtStrength, UniaxialTensionPeakAndSoftening) {
-  const test::PathResult r = test::run_axial_path(0.0, 1e-5, quasi_static, 4000);
+  const test::PathResult r = test::run_axial_path(0.0, quasi_static, 0.015, 1500, 1e-4);
   verify({"RHT uniaxial tension: peak stress", "f_t = 3.5 MPa (Wang et al. 2005, Table 3), +-25 %", ref.ft,
           r.axial_at_peak, 0.25, true, "Pa"});
   EXPECT_GE(r.final_damage, 1.0);
@@ -67,12 +67,12 @@ TEST(RhtStrength, UniaxialTensionPeakAndSoftening) {
 
 TEST(RhtStrength, RateEnhancementFollowsTheRateFactors) {
   for (const double rate : {1.0, 100.0}) {
-    const test::PathResult c = test::run_axial_path(0.0, -1e-5, rate, 600, 1.0, true);
+    const test::PathResult c = test::run_axial_path(0.0, -rate, -0.005, 500);
     const double f_c = std::pow(c.rate_at_peak / 3e-5, 0.032);
     verify({fmt::format("RHT uniaxial compression at {} /s: peak stress", rate),
             "F_c(rate) x static strength, F_c = (rate / 3e-5)^0.032", f_c * ref.uniaxial_compression(),
             -c.axial_at_peak, 0.02, true, "Pa"});
-    const test::PathResult t = test::run_axial_path(0.0, 1e-5, rate, 600, 1.0, true);
+    const test::PathResult t = test::run_axial_path(0.0, rate, 0.003, 600);
     const double f_t = std::pow(t.rate_at_peak / 3e-6, 0.036);
     verify({fmt::format("RHT uniaxial tension at {} /s: peak stress", rate),
             "F_t(rate) x f_t, F_t = (rate / 3e-6)^0.036", f_t * ref.ft, t.axial_at_peak, 0.02, true, "Pa"});

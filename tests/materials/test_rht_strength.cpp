@@ -8,6 +8,7 @@
 
 #include "common/verification.hpp"
 #include "concrete_paths.hpp"
+#include "materials/material_driver.hpp"
 
 using namespace camouflet;
 using camouflet::test::verify;
@@ -79,4 +80,31 @@ TEST(RhtStrength, RateEnhancementFollowsTheRateFactors) {
     std::printf("rate %g /s: F_c = %.4f (equivalent rate %.3g), F_t = %.4f (equivalent rate %.3g)\n", rate,
                 f_c, c.rate_at_peak, f_t, t.rate_at_peak);
   }
+}
+
+TEST(RhtStrength, ElasticLimitIsCappedBetweenCrushAndCompaction) {
+  // Triaxial compression at 3 GPa confinement, between p_e = 23.3 MPa and
+  // p_s = 6 GPa: plastic flow starts at Y_el = 0.53 F_CAP(p) Y_TXC(p) (eq. 25),
+  // F_CAP = sqrt(1 - ((p - p_e)/(p_s - p_e))^2).
+  DriverSpec spec;
+  spec.path = LoadPath::triaxial;
+  spec.strain_rate = -quasi_static;
+  spec.final_strain = -0.03;
+  spec.confining_pressure = 3e9;
+  spec.steps = 3000;
+  const std::vector<DriverRow> rows = drive_material(*test::concrete_35mpa(), spec);
+  std::size_t first_plastic = 0;
+  for (std::size_t k = 1; k < rows.size() && first_plastic == 0; ++k)
+    if (rows[k].plastic_strain > 0.0 && rows[k - 1].plastic_strain == 0.0 && rows[k].axial_strain != 0.0)
+      first_plastic = k;
+  ASSERT_GT(first_plastic, 0u);
+  // The elastic limit lies between the last elastic and the first plastic row.
+  const DriverRow& elastic = rows[first_plastic - 1];
+  const double p = elastic.pressure;
+  const double x = (p - 23.3e6) / (6e9 - 23.3e6);
+  const double expected = 0.53 * std::sqrt(1.0 - x * x) * ref.txc(p);
+  std::printf("elastic limit at p = %.3f GPa: F_CAP = %.4f, sqrt(3 J2) = %.1f MPa (last elastic row)\n",
+              p / 1e9, std::sqrt(1.0 - x * x), std::sqrt(3.0) * elastic.sqrt_j2 / 1e6);
+  verify({"RHT elastic limit at 3 GPa confinement (cap active)", "0.53 F_CAP(p) Y_TXC(p) (eq. 25)", expected,
+          std::sqrt(3.0) * elastic.sqrt_j2, 0.02, true, "Pa"});
 }

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   camouflet::app::CommandResult result;
   camouflet::app::add_run_command(app, result);
   camouflet::app::add_check_command(app, result);
+  camouflet::app::add_material_test_command(app, result);
   CLI11_PARSE(app, argc, argv);
   return result.exit_code;
 }

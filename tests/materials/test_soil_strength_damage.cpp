@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/verification.hpp"
+#include "materials/material_driver.hpp"
 #include "soil_test_support.hpp"
 
 namespace camouflet::test {
@@ -41,6 +42,48 @@ TEST(SoilDruckerPrager, TriaxialPeakLiesOnTheRateDependentSurface) {
                           confinement / 1e6, rate),
               "(alpha I1 + k)(1 + beta ln(eps_dot/eps_dot0)) (eq. 21)", expected, peak, 0.01, true, "Pa"});
       EXPECT_GT(point.pts.plastic_strain[0], 0.0);
+    }
+  }
+}
+
+// True triaxial compression with the material-point driver: hydrostatic to
+// the confining pressure, then axial compression with the lateral stress held.
+// With alpha = 0.25 the triaxial stress path (slope sqrt 3 in p-sqrt(J2))
+// meets the surface only while 3 alpha R < sqrt 3, i.e. for strain rates
+// below ~2 /s: the two rates are chosen in that range.
+TEST(SoilDruckerPrager, DrivenTriaxialPeakLiesOnTheSurface) {
+  const double alpha = 0.25, k = 0.2e6, beta = 0.1, rate0 = 0.01 / 60.0;
+  const auto material = soil_material(soil_eos_block(), soil_strength_block(), Parameters{});
+  for (double confinement : {0.2e6, 1e6, 5e6}) {
+    for (double rate : {1e-3, 0.1}) {
+      DriverSpec spec;
+      spec.path = LoadPath::triaxial;
+      spec.strain_rate = -rate;
+      spec.final_strain = -0.5;
+      spec.confining_pressure = confinement;
+      spec.steps = 1000;
+      const auto rows = drive_material(*material, spec);
+      std::size_t peak = 1;
+      for (std::size_t r = 1; r < rows.size(); ++r)
+        if (rows[r].sqrt_j2 > rows[peak].sqrt_j2) peak = r;
+      // Effective strain rate of that step from the axial and volumetric increments:
+      // D = diag(a, d, d) gives eps_dot_eff = 2/3 |a - d| (eq. 22).
+      const DriverRow& now = rows[peak];
+      const DriverRow& before = rows[peak - 1];
+      const double dt = now.time - before.time;
+      const double d_axial = now.axial_strain - before.axial_strain;
+      const double d_vol = now.volumetric_strain - before.volumetric_strain;
+      const double effective_rate = std::abs(3.0 * d_axial - d_vol) / (3.0 * dt);
+      const double expected =
+          (alpha * 3.0 * now.pressure + k) * std::max(1.0, 1.0 + beta * std::log(effective_rate / rate0));
+      verify(
+          {fmt::format("Soil triaxial compression (driver), confinement {:.1f} MPa, axial rate {:g}/s: peak "
+                       "sqrt(J2)",
+                       confinement / 1e6, rate),
+           "(alpha I1 + k)(1 + beta ln(eps_dot_eff/eps_dot0)) (eq. 21)", expected, now.sqrt_j2, 0.01, true,
+           "Pa"});
+      EXPECT_GT(rows.back().plastic_strain, 0.0) << "the path must reach the yield surface";
+      EXPECT_NEAR(0.5 * (rows.back().stress.yy + rows.back().stress.zz), -confinement, 1e-6 * confinement);
     }
   }
 }

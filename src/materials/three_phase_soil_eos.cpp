@@ -109,7 +109,12 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
     const SoilCompaction from{min_volume[i], max_pressure[i] + p0, max_pore_pressure[i] + p0};
     SoilState s;
     const bool density_ok = std::isfinite(rho) && rho > 0.0;
-    if (density_ok) s = soil_state(constants_, rho0 / rho, from, damage, pore_pressure[i] + p0);
+    // Warm starts: the pressure column holds the last solution (the previous
+    // step in the predictor, the predictor's in the corrector); the skeleton
+    // stress changes little over a step, so p - p_e,max guesses p_b.
+    const double pressure_guess = pts.pressure[i] + p0;
+    const double pore_guess = pressure_guess - (max_pressure[i] - max_pore_pressure[i]);
+    if (density_ok) s = soil_state(constants_, rho0 / rho, from, damage, pressure_guess, pore_guess);
     if (!density_ok || !s.converged || !std::isfinite(s.pressure) || !(s.bulk_modulus > 0.0)) {
 #pragma omp critical(three_phase_soil_failure)
       if (failed < 0 || static_cast<std::int64_t>(i) < failed) {
@@ -138,8 +143,8 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
       min_volume[i] = v;
       max_pressure[i] = s.pressure - p0;
       max_pore_pressure[i] = s.pore_pressure - p0;
-      const SoilState release = soil_unloading_state(constants_, v, {v, s.pressure, s.pore_pressure}, damage);
-      if (release.bulk_modulus > s.bulk_modulus) pts.sound_speed[i] = std::sqrt(release.bulk_modulus / rho);
+      const double release = soil_unloading_modulus(constants_, v, s.pressure, s.pore_pressure);
+      if (release > s.bulk_modulus) pts.sound_speed[i] = std::sqrt(release / rho);
     }
   }
   if (failed >= 0) throw NumericalError(EntityKind::material_point, failed, failed_quantity, failed_detail);

@@ -131,7 +131,7 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
   const double guess_excess = pore_pressure_guess - floor;
   const double x0 =
       (std::isfinite(guess_excess) && guess_excess > 0.0) ? std::log(guess_excess) : std::log(p0 - floor);
-  s.converged = solve_decreasing(eval, x0, -inf, inf, 1e-14 * std::max(1.0, v), 4.0, s.iterations);
+  s.converged = solve_decreasing(eval, x0, -inf, inf, 1e-12 * std::max(1.0, v), 4.0, s.iterations);
   s.bulk_modulus = -v * dp_dpb / dv_dpb;
   s.branch = SoilBranch::loading;
   if (s.pressure < cutoff) {
@@ -141,8 +141,18 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
   return s;
 }
 
+double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
+                              double pore_pressure) {
+  const double p0 = c.ambient_pressure;
+  const double vw = c.water.volume(pore_pressure, p0);
+  const double vs = c.solid.volume(pressure, p0);
+  const double compliance = (vw > 0.0 ? vw / c.water.tangent_modulus(pore_pressure, p0) : 0.0) +
+                            (vs > 0.0 ? vs / c.solid.tangent_modulus(pressure, p0) : 0.0);
+  return v / compliance;
+}
+
 SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const SoilCompaction& from,
-                               double damage) {
+                               double damage, double pressure_guess) {
   const double p0 = c.ambient_pressure;
   const double cutoff = p0 - (1.0 - damage) * c.tensile_strength;
   const double vw_max = c.water.volume(from.pore_pressure, p0);
@@ -152,42 +162,68 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
   // The compacted air voids and the skeleton stay as they were at maximum
   // compaction; water (at p_b = p_b,max + p - p_max) and grains (at p) expand
   // elastically along eqs. 13-14: the water-solid mixture stiffness.
-  auto eval = [&](double p, double& f, double& dfdp) {
+  auto eval = [&](double p, double& f) {
     const double pb = from.pore_pressure + (p - from.pressure);
     const double vw = c.water.volume(pb, p0);
     const double vs = c.solid.volume(p, p0);
     dv_dp = (vw > 0.0 ? -vw / c.water.tangent_modulus(pb, p0) : 0.0) +
             (vs > 0.0 ? -vs / c.solid.tangent_modulus(p, p0) : 0.0);
     f = from.volume + (vw - vw_max) + (vs - vs_max) - v;
-    dfdp = dv_dp;
     s.pressure = p;
     s.pore_pressure = pb;
-    s.pore_volume = from.volume - c.solid.volume(from.pressure, p0) + (vw - vw_max);
+    s.pore_volume = from.volume - vs_max + (vw - vw_max);
   };
-  const double tolerance = 1e-14 * std::max(1.0, v);
-  double f_cut = 0.0, df_cut = 0.0;
-  eval(cutoff, f_cut, df_cut);
-  if (std::isfinite(f_cut) && f_cut <= tolerance) {
-    // Beyond the cut-off: the mean stress stays at -(1 - D) p_t (gauge) and
-    // the stiffness reported is that of the branch at the cut-off.
-    s.converged = true;
-    s.iterations = 1;
-    s.pressure = cutoff;
-    s.bulk_modulus = -v / dv_dp;
-    s.branch = SoilBranch::tension_cutoff;
-    return s;
+  const double tolerance = 1e-12 * std::max(1.0, v);
+  const double top = std::max(from.pressure, cutoff);
+  // Newton from the guess inside [cut-off, p_max]. The cut-off end is only
+  // evaluated when Newton heads below it, so a point at the cut-off costs one
+  // evaluation and a point inside costs one or two with a good guess.
+  double lo = cutoff, hi = top;
+  bool lo_known = false;  // F(cut-off) > 0 established
+  double p = std::isfinite(pressure_guess) ? std::clamp(pressure_guess, cutoff, top) : top;
+  for (s.iterations = 1; s.iterations <= 200; ++s.iterations) {
+    double f = 0.0;
+    eval(p, f);
+    if (std::isfinite(f) && std::abs(f) <= tolerance) {
+      s.converged = true;
+      break;
+    }
+    if (!std::isfinite(f) || f > 0.0) {
+      lo = p;
+      lo_known = true;
+    } else {
+      hi = p;
+      if (p == cutoff) {
+        // Beyond the cut-off: the mean stress stays at -(1 - D) p_t (gauge)
+        // and the stiffness reported is that of the branch at the cut-off.
+        s.converged = true;
+        s.bulk_modulus = -v / dv_dp;
+        s.branch = SoilBranch::tension_cutoff;
+        return s;
+      }
+    }
+    double next = (std::isfinite(f) && dv_dp < 0.0) ? p - f / dv_dp : std::nan("");
+    if (!(next > lo && next < hi)) {
+      if (!lo_known && !(next > lo))
+        next = cutoff;  // test the cut-off itself
+      else
+        next = 0.5 * (lo + hi);
+    }
+    if (hi - lo <= 4e-16 * std::max(1.0, std::abs(hi))) {
+      s.converged = std::isfinite(f) && std::abs(f) <= 1e4 * tolerance;
+      break;
+    }
+    p = next;
   }
-  s.converged = solve_decreasing(eval, from.pressure, cutoff, std::max(from.pressure, cutoff), tolerance, inf,
-                                 s.iterations);
   s.bulk_modulus = -v / dv_dp;
   s.branch = SoilBranch::unloading;
   return s;
 }
 
 SoilState soil_state(const ThreePhaseSoilConstants& c, double v, const SoilCompaction& from, double damage,
-                     double pore_pressure_guess) {
+                     double pressure_guess, double pore_pressure_guess) {
   if (v < from.volume) return soil_loading_state(c, v, damage, pore_pressure_guess);
-  return soil_unloading_state(c, v, from, damage);
+  return soil_unloading_state(c, v, from, damage, pressure_guess);
 }
 
 }  // namespace camouflet

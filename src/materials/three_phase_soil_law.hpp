@@ -84,13 +84,20 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
 
 // Pressure on the unloading branch from `from` (water and grains unload
 // elastically, the compacted air voids and the skeleton stay as they were).
+// `pressure_guess` (absolute) warm-starts it.
 SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const SoilCompaction& from,
-                               double damage);
+                               double damage, double pressure_guess);
+
+// Tangent bulk modulus -v dp/dv of the unloading branch at total volume v,
+// pressure p and pore pressure p_b (absolute): water and grains in series.
+double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
+                              double pore_pressure);
 
 // The whole law: loading when v < from.volume, otherwise unloading; the
-// tension cut-off p >= p0 - (1 - D) p_t on either branch.
+// tension cut-off p >= p0 - (1 - D) p_t on either branch. The guesses only
+// speed up the solves (absolute pressure and pore pressure).
 SoilState soil_state(const ThreePhaseSoilConstants& c, double v, const SoilCompaction& from, double damage,
-                     double pore_pressure_guess);
+                     double pressure_guess, double pore_pressure_guess);
 
 // Total volume on the loading curve for a given pore pressure (explicit: used
 // by the tests and the documentation to tabulate the curve independently).

@@ -33,7 +33,9 @@ void SoilBondDamage::update(MaterialPoints& pts, const MaterialContext& ctx) con
   double* col[6];
   for (int k = 0; k < 6; ++k) col[k] = pts.history.column(pts.history.slot(strain_columns[k]));
   double* effective = pts.history.column(pts.history.slot("soil_effective_strain"));
-#pragma omp parallel for schedule(static)
+// Small batches (a material-point driver, a few particles) run serially: a
+// thread team costs more than the points.
+#pragma omp parallel for schedule(static) if (n >= 256)
   for (std::size_t i = 0; i < n; ++i) {
     SymTensor strain{col[0][i], col[1][i], col[2][i], col[3][i], col[4][i], col[5][i]};
     strain += jaumann_increment(strain, pts.spin[i], dt);

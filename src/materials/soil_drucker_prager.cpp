@@ -24,7 +24,9 @@ void SoilDruckerPrager::update(MaterialPoints& pts, const MaterialContext& ctx) 
   const std::size_t n = pts.size();
   const double dt = ctx.dt;
   const double g = p_.shear_modulus;
-#pragma omp parallel for schedule(static)
+// Small batches (a material-point driver, a few particles) run serially: a
+// thread team costs more than the points.
+#pragma omp parallel for schedule(static) if (n >= 256)
   for (std::size_t i = 0; i < n; ++i) {
     const SymTensor rate = deviator(pts.strain_rate[i]);
     const double effective_rate = std::sqrt(2.0 / 3.0 * contract(rate, rate));  // eq. 22

@@ -102,7 +102,9 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
   std::int64_t failed = -1;
   std::string failed_quantity, failed_detail;
 
-#pragma omp parallel for schedule(static)
+// Small batches (a material-point driver, a few particles) run serially: a
+// thread team costs more than the points.
+#pragma omp parallel for schedule(static) if (n >= 256)
   for (std::size_t i = 0; i < n; ++i) {
     const double rho = pts.density[i];
     const double damage = pts.damage[i];

@@ -2,6 +2,8 @@
 // Helpers for the three-phase soil tests: the sandy clay preset as Parameters
 // and a 1-point driver that advances a material point under a prescribed
 // strain rate through Material::update (the same path FEM and SPH use).
+#include <omp.h>
+
 #include <cmath>
 #include <memory>
 
@@ -41,6 +43,12 @@ inline std::shared_ptr<const Material> soil_material(Parameters eos, Parameters 
   (void)&make_soil_drucker_prager;
   (void)&make_soil_bond_damage;
   return make_material("soil", "", {}, std::move(eos), std::move(strength), std::move(damage));
+}
+
+// Single-point drives gain nothing from threads, and on a loaded machine each
+// OpenMP fork/join of Material::update can cost milliseconds: run them serially.
+inline void single_point_threads() {
+  omp_set_num_threads(1);
 }
 
 // One material point driven by a strain rate (density from the volumetric part).

@@ -1,0 +1,70 @@
+#pragma once
+// Boundary conditions of Model::boundaries, resolved onto nodes once:
+// velocity constraints (fixed, prescribed velocity with optional history,
+// symmetry plane, axis of revolution) applied to v(n+1/2) each cycle, and
+// pressure loads on face sets added to the nodal forces. Both report the
+// work they do, for the energy balance.
+#include <cstdint>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace camouflet {
+
+template <int D>
+class BoundaryConditions {
+ public:
+  BoundaryConditions() = default;
+  // Throws InputError (at the condition's `where`) for an unknown set, a
+  // zero symmetry normal, an axis outside axisymmetric mode, or a kind not
+  // available yet.
+  explicit BoundaryConditions(const Model& model);
+
+  // f (n*D) += pressure loads at time t on the current geometry x.
+  void add_loads(const double* x, double time, double* f);
+  // Work of the loads of the last add_loads over a step in which the
+  // velocity went from v_old to v_new, with impulse dt (J).
+  double load_work(const double* v_old, const double* v_new, double dt) const;
+
+  // Imposes the constraints on v (n*D) for the half step centred on `time`.
+  // Returns the work of the reaction impulses m (v_constrained - v_free)
+  // against the mean velocity (v_old + v) / 2 (J).
+  double constrain(double* v, const double* v_old, const double* node_mass, double time) const;
+
+  // The constraints alone (no work): used for the initial velocities.
+  void constrain(double* v, double time) const;
+
+ private:
+  struct Component {
+    std::int64_t node;
+    int component;
+    double value;      // m/s
+    int history = -1;  // index into histories_, scale factor
+  };
+  struct Plane {
+    std::int64_t node;
+    std::array<double, D> normal;  // unit
+  };
+  struct Load {
+    std::vector<std::int64_t> faces;  // nodes per face: 2 (2-D) or 4 (3-D)
+    double pressure = 0.0;            // Pa
+    int history = -1;
+  };
+  struct LoadForce {
+    std::int64_t node;
+    std::array<double, D> force;  // N
+  };
+  double scale(int history, double time) const;
+
+  std::vector<Component> components_;
+  std::vector<Plane> planes_;
+  std::vector<Load> loads_;
+  std::vector<TimeHistory> histories_;
+  std::vector<LoadForce> load_forces_;  // of the latest add_loads
+  bool axisymmetric_ = false;
+};
+
+extern template class BoundaryConditions<2>;
+extern template class BoundaryConditions<3>;
+
+}  // namespace camouflet

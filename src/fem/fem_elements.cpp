@@ -1,0 +1,313 @@
+#include "fem/fem_elements.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "fem/colouring.hpp"
+#include "fem/parallel.hpp"
+#include "fem/shape.hpp"
+
+namespace camouflet {
+
+namespace {
+
+constexpr double two_pi = 2.0 * std::numbers::pi;
+
+template <int D>
+using NodeValues = double[D][Shape<D>::nodes];
+
+template <int D>
+inline void gather(const double* field, const std::int64_t* conn, NodeValues<D>& out) {
+  for (int a = 0; a < Shape<D>::nodes; ++a)
+    for (int i = 0; i < D; ++i) out[i][a] = field[conn[a] * D + i];
+}
+
+// Axisymmetric volume weight 2 pi r_bar (r_bar = mean nodal radius, the
+// centre of the one-point element); 1 otherwise.
+template <int D>
+inline double ring_weight(bool axisymmetric, const NodeValues<D>& x, double& r_bar) {
+  if constexpr (D == 2) {
+    if (axisymmetric) {
+      r_bar = 0.25 * (x[0][0] + x[0][1] + x[0][2] + x[0][3]);
+      return two_pi * r_bar;
+    }
+  }
+  r_bar = 0.0;
+  return 1.0;
+}
+
+// gamma_alpha,a = Gamma_alpha,a - (Gamma_alpha . x_i) b_ia: the hourglass shape
+// vectors orthogonal to every linear velocity field (FB 1981, eq. 56, without
+// their 1/N so that the coefficient has the scale of the LS-DYNA Q_hg).
+template <int D>
+inline void hourglass_shapes(const NodeValues<D>& x, const NodeValues<D>& b,
+                             double (&g)[Shape<D>::modes][Shape<D>::nodes]) {
+  constexpr int N = Shape<D>::nodes;
+  for (int m = 0; m < Shape<D>::modes; ++m) {
+    double gx[D];
+    for (int i = 0; i < D; ++i) {
+      gx[i] = 0.0;
+      for (int a = 0; a < N; ++a) gx[i] += Shape<D>::base[m][a] * x[i][a];
+    }
+    for (int a = 0; a < N; ++a) {
+      double v = Shape<D>::base[m][a];
+      for (int i = 0; i < D; ++i) v -= gx[i] * b[i][a];
+      g[m][a] = v;
+    }
+  }
+}
+
+// Rows of the 3-D stress tensor restricted to the D in-plane components.
+template <int D>
+inline void stress_rows(const SymTensor& s, double (&sig)[D][D]) {
+  sig[0][0] = s.xx;
+  sig[0][1] = sig[1][0] = s.xy;
+  sig[1][1] = s.yy;
+  if constexpr (D == 3) {
+    sig[2][2] = s.zz;
+    sig[1][2] = sig[2][1] = s.yz;
+    sig[0][2] = sig[2][0] = s.zx;
+  }
+}
+
+}  // namespace
+
+template <int D>
+FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::vector<double>& coordinates)
+    : connectivity(mesh.connectivity), axisymmetric_(mode == GeometryMode::axisymmetric) {
+  const std::size_t n = mesh.element_count();
+  material.assign(n, 0);
+  point.assign(n, 0);
+  mass.assign(n, 0.0);
+  volume.assign(n, 0.0);
+  stress.assign(n, SymTensor{});
+  viscosity.assign(n, 0.0);
+  density.assign(n, 0.0);
+  wave_speed.assign(n, 0.0);
+  length.assign(n, 0.0);
+  speed.assign(n, 0.0);
+  hourglass_displacement.assign(n * modes * D, 0.0);
+  for (std::size_t e = 0; e < n; ++e) {
+    NodeValues<D> x, b;
+    gather<D>(coordinates.data(), &connectivity[e * nodes], x);
+    const double measure = Shape<D>::gradients(x, b);
+    double r_bar = 0.0;
+    const double w = ring_weight<D>(axisymmetric_, x, r_bar);
+    volume[e] = measure * w;
+    if (!(measure > 0.0) || !std::isfinite(measure) || (axisymmetric_ && !(r_bar > 0.0)))
+      throw InputError(
+          SourceLocation{{}, 0, 0, "mesh"},
+          fmt::format("element {} is inverted or degenerate ({} {:.6g}{}); {}", e + 1,
+                      D == 2 ? "area" : "volume", measure,
+                      axisymmetric_ && !(r_bar > 0.0) ? ", centre at r <= 0" : "",
+                      D == 2 ? "quad nodes must run counter-clockwise"
+                             : "hex nodes: bottom face counter-clockwise seen from above, then top"));
+    const double l = Shape<D>::length(x, measure);
+    length[e] = l;
+  }
+  colours = colour_elements(connectivity, nodes, coordinates.size() / D);
+}
+
+template <int D>
+double FemElements<D>::volume_of(const double* x, std::size_t e) const {
+  NodeValues<D> xe, b;
+  gather<D>(x, &connectivity[e * nodes], xe);
+  double r_bar = 0.0;
+  const double w = ring_weight<D>(axisymmetric_, xe, r_bar);
+  return Shape<D>::gradients(xe, b) * w;
+}
+
+template <int D>
+double FemElements<D>::add_internal_forces(const double* x, const double* v, double* f, double* f_hourglass,
+                                           const HourglassControl& hg, double dt_previous) {
+  constexpr int N = nodes;
+  const bool axi = axisymmetric_;
+  const bool viscous_hg = hg.form == HourglassForm::viscous && hg.coefficient > 0.0;
+  const bool stiff_hg = hg.form == HourglassForm::stiffness && hg.coefficient > 0.0;
+  double stored = 0.0;
+  for (const auto& colour : colours) {
+    const std::int64_t count = static_cast<std::int64_t>(colour.size());
+#pragma omp parallel for schedule(static) reduction(+ : stored) if (count > parallel_threshold)
+    for (std::int64_t k = 0; k < count; ++k) {
+      const std::size_t e = static_cast<std::size_t>(colour[static_cast<std::size_t>(k)]);
+      const std::int64_t* conn = &connectivity[e * N];
+      NodeValues<D> xe, b, fe;
+      gather<D>(x, conn, xe);
+      const double measure = Shape<D>::gradients(xe, b);
+      double r_bar = 0.0;
+      const double w = ring_weight<D>(axi, xe, r_bar);
+      const double vol = measure * w;
+
+      // Stress divergence: f_ia = -V sigma_ij b_ja (FB 1981, eq. 17), with q as a pressure.
+      SymTensor s = stress[e];
+      const double q = viscosity[e];
+      s.xx -= q;
+      s.yy -= q;
+      s.zz -= q;
+      double sig[D][D];
+      stress_rows<D>(s, sig);
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < D; ++i) {
+          double t = 0.0;
+          for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
+          fe[i][a] = -vol * t;
+        }
+      if constexpr (D == 2) {
+        // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
+        // v_r at the centre = mean of the nodal v_r.
+        if (axi)
+          for (int a = 0; a < N; ++a) fe[0][a] -= vol * s.zz / (N * r_bar);
+      }
+
+      if (viscous_hg || stiff_hg) {
+        NodeValues<D> ve, fh;
+        gather<D>(v, conn, ve);
+        double g[Shape<D>::modes][N];
+        hourglass_shapes<D>(xe, b, g);
+        const double rho = density[e], c = wave_speed[e];
+        const double l = D == 2 ? std::sqrt(measure) : std::cbrt(measure);
+        // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
+        // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
+        const double coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
+                                       : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
+        double* hd = &hourglass_displacement[e * modes * D];
+        for (int a = 0; a < N; ++a)
+          for (int i = 0; i < D; ++i) fh[i][a] = 0.0;
+        for (int m = 0; m < Shape<D>::modes; ++m)
+          for (int i = 0; i < D; ++i) {
+            double rate = 0.0;
+            for (int a = 0; a < N; ++a) rate += g[m][a] * ve[i][a];
+            double amplitude;
+            if (viscous_hg) {
+              amplitude = rate;
+            } else {
+              hd[m * D + i] += rate * dt_previous;
+              amplitude = hd[m * D + i];
+              stored += 0.5 * coef * amplitude * amplitude;
+            }
+            for (int a = 0; a < N; ++a) fh[i][a] -= coef * amplitude * g[m][a];
+          }
+        for (int a = 0; a < N; ++a)
+          for (int i = 0; i < D; ++i) {
+            fe[i][a] += fh[i][a];
+            if (f_hourglass) f_hourglass[conn[a] * D + i] += fh[i][a];
+          }
+      }
+
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < D; ++i) f[conn[a] * D + i] += fe[i][a];
+    }
+  }
+  return stored;
+}
+
+template <int D>
+KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, double dt,
+                                            const ViscosityControl& visc,
+                                            std::vector<MaterialPoints>& batches) {
+  constexpr int N = nodes;
+  const bool axi = axisymmetric_;
+  const std::int64_t n = static_cast<std::int64_t>(size());
+  std::int64_t bad = std::numeric_limits<std::int64_t>::max();
+  double viscous_work = 0.0;
+#pragma omp parallel for schedule(static) reduction(min : bad) reduction(+ : viscous_work) if (n > parallel_threshold)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const std::size_t e = static_cast<std::size_t>(k);
+    const std::int64_t* conn = &connectivity[e * N];
+    NodeValues<D> xe, ve, xh, b;
+    gather<D>(x, conn, xe);
+    gather<D>(v, conn, ve);
+    double speed2 = 0.0;
+    for (int a = 0; a < N; ++a) {
+      double s2 = 0.0;
+      for (int i = 0; i < D; ++i) {
+        xh[i][a] = xe[i][a] - 0.5 * dt * ve[i][a];
+        s2 += ve[i][a] * ve[i][a];
+      }
+      speed2 = std::max(speed2, s2);
+    }
+
+    // Velocity gradient L_ij = sum_a v_ia b_ja on the mid-step geometry (FB 1981, eq. 14).
+    Shape<D>::gradients(xh, b);
+    double L[3][3] = {};
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) {
+        double t = 0.0;
+        for (int a = 0; a < N; ++a) t += ve[i][a] * b[j][a];
+        L[i][j] = t;
+      }
+    if constexpr (D == 2) {
+      if (axi) {
+        // Hoop strain rate v_r / r at the element centre.
+        double vr = 0.0, r = 0.0;
+        for (int a = 0; a < N; ++a) {
+          vr += ve[0][a];
+          r += xh[0][a];
+        }
+        L[2][2] = vr / r;
+      }
+    }
+    const SymTensor rate{L[0][0],
+                         L[1][1],
+                         L[2][2],
+                         0.5 * (L[0][1] + L[1][0]),
+                         0.5 * (L[1][2] + L[2][1]),
+                         0.5 * (L[2][0] + L[0][2])};
+    const Spin spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
+
+    // New volume and density at t_{n+1}.
+    const double measure = Shape<D>::gradients(xe, b);
+    double r_bar = 0.0;
+    const double w = ring_weight<D>(axi, xe, r_bar);
+    const double vol = measure * w;
+    if (!(vol > 0.0) || !std::isfinite(vol)) {
+      bad = std::min(bad, k);
+      continue;
+    }
+    const double rho = mass[e] / vol;
+    const double l = Shape<D>::length(xe, measure);
+
+    // Artificial bulk viscosity, compression only (von Neumann-Richtmyer
+    // quadratic + Landshoff linear): q = rho l (C_q^2 l |tr D| + C_l c) |tr D|.
+    const double div = rate.trace();
+    const double q =
+        div < 0.0
+            ? rho * l * (visc.quadratic * visc.quadratic * l * -div + visc.linear * wave_speed[e]) * -div
+            : 0.0;
+    // The force at t_n carried the previous q, the force at t_(n+1) carries
+    // this one; each acts over half of this step's volume change, so the
+    // energy equation is charged with their mean (time-centred q dV).
+    const double q_mean = 0.5 * (viscosity[e] + q);
+    viscous_work -= q_mean * (vol - volume[e]);
+
+    MaterialPoints& pts = batches[static_cast<std::size_t>(material[e])];
+    const std::size_t p = point[e];
+    pts.density_previous[p] = pts.density[p];
+    pts.density[p] = rho;
+    pts.strain_rate[p] = rate;
+    pts.spin[p] = spin;
+    pts.artificial_viscosity[p] = q_mean;
+    pts.characteristic_length[p] = l;
+    volume[e] = vol;
+    density[e] = rho;
+    viscosity[e] = q;
+    length[e] = l;
+    speed[e] = std::sqrt(speed2);
+  }
+  KinematicsResult result;
+  result.viscous_work = viscous_work;
+  if (bad != std::numeric_limits<std::int64_t>::max()) {
+    result.bad_element = bad;
+    result.bad_volume = volume_of(x, static_cast<std::size_t>(bad));
+  }
+  return result;
+}
+
+template class FemElements<2>;
+template class FemElements<3>;
+
+}  // namespace camouflet

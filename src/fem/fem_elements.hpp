@@ -1,0 +1,90 @@
+#pragma once
+// The Lagrangian elements of a model as structure-of-arrays, and the two
+// element stages of the explicit cycle (architecture.md):
+//   add_internal_forces  f_a -= V sigma b_a (+ hoop term) + hourglass resistance, at t_n
+//   kinematics           V, rho = m/V at t_{n+1}; D, W at mid-step; artificial viscosity q
+// One integration point per element (quad4 plane strain / axisymmetric, hex8).
+// Node arrays are flat, n * D, owned by the solver; material state lives in
+// each material's MaterialPoints, found through (material, point).
+#include <cstdint>
+#include <vector>
+
+#include "core/sym_tensor.hpp"
+#include "materials/material_points.hpp"
+#include "model/model.hpp"
+
+namespace camouflet {
+
+struct HourglassControl {
+  HourglassForm form = HourglassForm::viscous;
+  double coefficient = 0.1;  // dimensionless (FB 1981 kappa)
+};
+
+struct ViscosityControl {
+  double quadratic = 1.5;  // c_quadratic
+  double linear = 0.06;    // c_linear
+};
+
+struct KinematicsResult {
+  std::int64_t bad_element = -1;  // 0-based; first element with non-positive or non-finite volume
+  double bad_volume = 0.0;
+  double viscous_work = 0.0;  // J, -sum q dV over this step
+};
+
+template <int D>
+class FemElements {
+ public:
+  static constexpr int nodes = D == 2 ? 4 : 8;
+  static constexpr int modes = D == 2 ? 1 : 4;
+
+  FemElements() = default;
+  // Geometry and connectivity only; material, point, mass and the state
+  // arrays are filled by the solver. Throws InputError naming the first
+  // inverted or degenerate element.
+  FemElements(const FemMesh& mesh, GeometryMode mode, const std::vector<double>& coordinates);
+
+  std::size_t size() const { return material.size(); }
+  bool axisymmetric() const { return axisymmetric_; }
+
+  // f (n*D) += internal forces at the positions x (t_n), stresses `stress`
+  // less q, and hourglass resistance from the velocities v (t_{n-1/2}).
+  // dt_previous advances the stiffness-form hourglass displacements. The
+  // hourglass forces alone are also added to f_hourglass (n*D) when it is
+  // not null, so the solver can charge the viscous form's work time-centred.
+  // Returns the energy held by the stiffness form at t_n (J; 0 otherwise).
+  double add_internal_forces(const double* x, const double* v, double* f, double* f_hourglass,
+                             const HourglassControl& hg, double dt_previous);
+
+  // From x (t_{n+1}) and v (t_{n+1/2}): new volume and density, strain rate
+  // and spin at mid-step, q, characteristic length and speed; written into
+  // the element arrays and the material batches.
+  KinematicsResult kinematics(const double* x, const double* v, double dt, const ViscosityControl& viscosity,
+                              std::vector<MaterialPoints>& batches);
+
+  // Element volume (m^3; per unit depth in plane strain, the full ring in
+  // axisymmetric mode) of one element at positions x.
+  double volume_of(const double* x, std::size_t e) const;
+
+  // --- element arrays (SoA), index e ---
+  std::vector<std::int64_t> connectivity;      // e * nodes + a
+  std::vector<int> material;                   // index into Model::materials (and the solver's batches)
+  std::vector<std::size_t> point;              // index into that material's MaterialPoints
+  std::vector<double> mass;                    // kg (plane strain: per metre of depth)
+  std::vector<double> volume;                  // m^3, at the latest kinematics
+  std::vector<SymTensor> stress;               // Pa, sigma = s - p I at the latest material update
+  std::vector<double> viscosity;               // Pa, artificial bulk viscosity q
+  std::vector<double> density;                 // kg/m^3
+  std::vector<double> wave_speed;              // m/s, sqrt(c^2 + 4G/3rho) of the latest update
+  std::vector<double> length;                  // m, characteristic length for dt and q
+  std::vector<double> speed;                   // m/s, largest node speed of the element
+  std::vector<double> hourglass_displacement;  // m, e * modes * D: stiffness-form generalised modes
+  std::vector<std::vector<std::int64_t>> colours;
+
+ private:
+  bool axisymmetric_ = false;
+};
+
+extern template class FemElements<2>;
+extern template class FemElements<3>;
+
+}  // namespace camouflet

@@ -1,0 +1,114 @@
+#pragma once
+// Geometry of the one-point elements: uniform-gradient vectors b_a = dN_a/dx
+// (Flanagan & Belytschko 1981, IJNME 17, 679), the element measure, the
+// hourglass base vectors and the characteristic length for the time step.
+// Shape<2> is the 4-node quadrilateral, Shape<3> the 8-node hexahedron.
+// Coordinates come as x[i][a]: component i of node a.
+#include <algorithm>
+#include <cmath>
+
+namespace camouflet {
+
+template <int D>
+struct Shape;
+
+template <>
+struct Shape<2> {
+  static constexpr int nodes = 4;
+  static constexpr int modes = 1;
+  // Hourglass base vector of the quadrilateral (FB 1981, eq. 47).
+  static constexpr double base[1][4] = {{1.0, -1.0, 1.0, -1.0}};
+
+  // b[i][a] = dN_a/dx_i at the centre, which for the bilinear quad equals the
+  // area average (FB 1981, eq. 15); returns the area (m^2).
+  static double gradients(const double (&x)[2][4], double (&b)[2][4]) {
+    const double x13 = x[0][2] - x[0][0], x24 = x[0][3] - x[0][1];
+    const double y13 = x[1][2] - x[1][0], y24 = x[1][3] - x[1][1];
+    const double area = 0.5 * (x13 * y24 - x24 * y13);
+    const double s = 0.5 / area;
+    b[0][0] = -y24 * s;
+    b[0][1] = y13 * s;
+    b[0][2] = y24 * s;
+    b[0][3] = -y13 * s;
+    b[1][0] = x24 * s;
+    b[1][1] = -x13 * s;
+    b[1][2] = -x24 * s;
+    b[1][3] = x13 * s;
+    return area;
+  }
+
+  // Area / longest side: the shortest crossing distance of the element.
+  static double length(const double (&x)[2][4], double area) {
+    double longest = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const int c = (a + 1) % 4;
+      const double dx = x[0][c] - x[0][a], dy = x[1][c] - x[1][a];
+      longest = std::max(longest, dx * dx + dy * dy);
+    }
+    return area / std::sqrt(longest);
+  }
+};
+
+template <>
+struct Shape<3> {
+  static constexpr int nodes = 8;
+  static constexpr int modes = 4;
+  // Hourglass base vectors of the hexahedron (FB 1981, Table 1), node order
+  // bottom face counter-clockwise, then top.
+  static constexpr double base[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                        {1, -1, -1, 1, -1, 1, 1, -1},
+                                        {1, -1, 1, -1, 1, -1, 1, -1},
+                                        {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+  // One row of FB 1981 eq. (79): dV/dx_a for node a = 0 from the other two
+  // coordinate components (y, z) -> x, via the node permutation of each node.
+  static double volume_derivative(const double* y, const double* z, const int (&p)[8]) {
+    const auto Y = [&](int k) { return y[p[k - 1]]; };
+    const auto Z = [&](int k) { return z[p[k - 1]]; };
+    return (Y(2) * ((Z(6) - Z(3)) - (Z(4) - Z(5))) + Y(3) * (Z(2) - Z(4)) +
+            Y(4) * ((Z(3) - Z(8)) - (Z(5) - Z(2))) + Y(5) * ((Z(8) - Z(6)) - (Z(2) - Z(4))) +
+            Y(6) * (Z(5) - Z(2)) + Y(8) * (Z(4) - Z(5))) /
+           12.0;
+  }
+
+  // b[i][a] = (1/V) dV/dx_ia, the uniform-strain gradient vectors that make
+  // the one-point hexahedron pass the patch test (FB 1981, eqs. 16, 79);
+  // returns the exact trilinear volume (m^3).
+  static double gradients(const double (&x)[3][8], double (&b)[3][8]) {
+    static constexpr int perm[8][8] = {{0, 1, 2, 3, 4, 5, 6, 7}, {1, 2, 3, 0, 5, 6, 7, 4},
+                                       {2, 3, 0, 1, 6, 7, 4, 5}, {3, 0, 1, 2, 7, 4, 5, 6},
+                                       {4, 7, 6, 5, 0, 3, 2, 1}, {5, 4, 7, 6, 1, 0, 3, 2},
+                                       {6, 5, 4, 7, 2, 1, 0, 3}, {7, 6, 5, 4, 3, 2, 1, 0}};
+    for (int a = 0; a < 8; ++a) {
+      b[0][a] = volume_derivative(x[1], x[2], perm[a]);
+      b[1][a] = volume_derivative(x[2], x[0], perm[a]);
+      b[2][a] = volume_derivative(x[0], x[1], perm[a]);
+    }
+    double volume = 0.0;
+    for (int a = 0; a < 8; ++a) volume += x[0][a] * b[0][a];
+    const double s = 1.0 / volume;
+    for (int i = 0; i < 3; ++i)
+      for (int a = 0; a < 8; ++a) b[i][a] *= s;
+    return volume;
+  }
+
+  // Volume / largest face area: the shortest crossing distance of the element.
+  static double length(const double (&x)[3][8], double volume) {
+    static constexpr int face[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                       {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    double largest = 0.0;
+    for (const auto& f : face) {
+      double d1[3], d2[3];
+      for (int i = 0; i < 3; ++i) {
+        d1[i] = x[i][f[2]] - x[i][f[0]];
+        d2[i] = x[i][f[3]] - x[i][f[1]];
+      }
+      const double n0 = d1[1] * d2[2] - d1[2] * d2[1], n1 = d1[2] * d2[0] - d1[0] * d2[2],
+                   n2 = d1[0] * d2[1] - d1[1] * d2[0];
+      largest = std::max(largest, n0 * n0 + n1 * n1 + n2 * n2);
+    }
+    return volume / (0.5 * std::sqrt(largest));
+  }
+};
+
+}  // namespace camouflet

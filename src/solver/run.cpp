@@ -1,0 +1,94 @@
+// run_model(): the driver around Solver<D> (solver/run.hpp) that advances to
+// the end time, feeds RunOutput every cycle and reports progress.
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "output/run_output.hpp"
+#include "solver/solver.hpp"
+#if __has_include("output/progress.hpp")
+#include "output/progress.hpp"
+#define CAMOUFLET_HAS_PROGRESS 1
+#endif
+
+namespace camouflet {
+
+namespace {
+
+template <int D>
+RunSummary run_dimension(const Model& model, const RunOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto wall = [&start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  Solver<D> solver(model);
+  RunOutput output(model, options, solver.snapshot());
+#ifdef CAMOUFLET_HAS_PROGRESS
+  ProgressReporter progress(options.progress, model.run.end_time);
+  progress.set_log_interval(model.output.log_interval_s);
+#endif
+  RunSummary summary;
+  const auto summarise = [&](std::string reason, bool failed) {
+    summary.time = solver.time();
+    summary.cycles = solver.cycle();
+    summary.wall_seconds = wall();
+    summary.energy = solver.energy();
+    summary.last_limit = solver.time_step_limit();
+    summary.stop_reason = std::move(reason);
+    summary.failed = failed;
+  };
+  const RunControl& run = model.run;
+  // A step shorter than this fraction of the last one would only land on the
+  // end time by rounding: stop instead.
+  const double end_tolerance = 1e-12 * std::max(run.end_time, 1e-300);
+  std::string reason = "end time reached";
+  try {
+    while (solver.time() < run.end_time - end_tolerance) {
+      if (solver.cycle() >= run.max_cycles) {
+        reason = "max cycles reached";
+        break;
+      }
+      solver.limit_next_step(run.end_time - solver.time());
+      solver.step();
+      output.after_cycle(solver.snapshot());
+      const EnergyBalance& energy = solver.energy();
+#ifdef CAMOUFLET_HAS_PROGRESS
+      progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
+                      solver.time_step_limit().reason, energy.relative_error, wall());
+#endif
+      if (energy.relative_error > run.energy_error_limit) {
+        NumericalError error(EntityKind::model, 0, "energy balance",
+                             fmt::format("relative energy error {:.3e} exceeds energy_error_limit {:.3e}",
+                                         energy.relative_error, run.energy_error_limit));
+        error.set_context(solver.cycle(), solver.time(), "");
+        throw error;
+      }
+    }
+  } catch (const NumericalError& error) {
+#ifdef CAMOUFLET_HAS_PROGRESS
+    progress.done();
+#endif
+    summarise(error.what(), true);
+    output.finish(solver.snapshot(), summary);
+    throw;
+  }
+#ifdef CAMOUFLET_HAS_PROGRESS
+  progress.done();
+#endif
+  summarise(reason, false);
+  output.finish(solver.snapshot(), summary);
+  return summary;
+}
+
+}  // namespace
+
+RunSummary run_model(const Model& model, const RunOptions& options) {
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  if (model.dimension() == 3) return run_dimension<3>(model, options);
+  return run_dimension<2>(model, options);
+}
+
+}  // namespace camouflet

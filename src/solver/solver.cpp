@@ -1,0 +1,389 @@
+#include "solver/solver.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fem/parallel.hpp"
+
+namespace camouflet {
+
+namespace {
+
+// Element centre (m, padded to 3 components) for EquationOfState::place.
+template <int D>
+std::array<double, 3> centre(const std::vector<double>& x, const std::int64_t* conn) {
+  constexpr int N = FemElements<D>::nodes;
+  std::array<double, 3> c{};
+  for (int a = 0; a < N; ++a)
+    for (int i = 0; i < D; ++i) c[static_cast<std::size_t>(i)] += x[conn[a] * D + i] / N;
+  return c;
+}
+
+}  // namespace
+
+template <int D>
+Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
+  const FemMesh& mesh = model.mesh;
+  if (mesh.dimension != D || model.dimension() != D)
+    throw InputError(model.run.where, fmt::format("mesh dimension {} does not match geometry mode '{}'",
+                                                  mesh.dimension, to_string(model.run.mode)));
+  if (mesh.nodes_per_element != FemElements<D>::nodes)
+    throw InputError(model.run.where, fmt::format("{}-D meshes need {}-node elements, got {}", D,
+                                                  FemElements<D>::nodes, mesh.nodes_per_element));
+  const std::size_t nn = mesh.node_count();
+  position_ = mesh.coordinates;
+  for (auto* v : {&velocity_, &velocity_old_, &acceleration_, &force_, &displacement_})
+    v->assign(nn * D, 0.0);
+  node_mass_.assign(nn, 0.0);
+
+  elements_ = FemElements<D>(mesh, mode_, position_);
+  const std::size_t ne = elements_.size();
+
+  // Elements -> material batches.
+  batches_.resize(model.materials.size());
+  std::vector<std::size_t> count(model.materials.size(), 0);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int part_index = mesh.element_part[e];
+    if (part_index < 0 || static_cast<std::size_t>(part_index) >= model.parts.size())
+      throw InputError(model.run.where, fmt::format("element {} belongs to no part", e + 1));
+    const Part& part = model.parts[static_cast<std::size_t>(part_index)];
+    if (part.material < 0 || static_cast<std::size_t>(part.material) >= model.materials.size())
+      throw InputError(part.where, fmt::format("part '{}' has no material", part.name));
+    elements_.material[e] = part.material;
+    elements_.point[e] = count[static_cast<std::size_t>(part.material)]++;
+  }
+  std::vector<std::vector<std::array<double, 3>>> centres(model.materials.size());
+  for (std::size_t e = 0; e < ne; ++e)
+    centres[static_cast<std::size_t>(elements_.material[e])].push_back(
+        centre<D>(position_, &elements_.connectivity[e * FemElements<D>::nodes]));
+  for (std::size_t m = 0; m < batches_.size(); ++m) {
+    const Material& mat = *model.materials[m].material;
+    mat.setup(batches_[m], count[m]);
+    mat.eos().place(batches_[m], centres[m], model.detonations);
+  }
+
+  // Masses and initial velocities (mass-weighted where parts meet).
+  std::vector<double> momentum(nn * D, 0.0);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
+    const double rho0 = pts.density[elements_.point[e]];
+    elements_.mass[e] = rho0 * elements_.volume[e];
+    elements_.density[e] = rho0;
+    const Part& part = model.parts[static_cast<std::size_t>(mesh.element_part[e])];
+    const double m_node = elements_.mass[e] / FemElements<D>::nodes;
+    for (int a = 0; a < FemElements<D>::nodes; ++a) {
+      const std::int64_t n = elements_.connectivity[e * FemElements<D>::nodes + static_cast<std::size_t>(a)];
+      node_mass_[static_cast<std::size_t>(n)] += m_node;
+      for (int i = 0; i < D; ++i)
+        momentum[static_cast<std::size_t>(n * D + i)] +=
+            m_node * part.initial_velocity[static_cast<std::size_t>(i)];
+    }
+  }
+  for (std::size_t n = 0; n < nn; ++n)
+    for (int i = 0; i < D; ++i)
+      velocity_[n * D + static_cast<std::size_t>(i)] =
+          node_mass_[n] > 0.0 ? momentum[n * D + static_cast<std::size_t>(i)] / node_mass_[n] : 0.0;
+
+  hourglass_ = {model.run.hourglass, model.run.hourglass_coefficient};
+  // The viscous form's work is charged from its nodal forces; the stiffness
+  // form holds its energy as a state (1/2 k q^2), like the internal energy.
+  if (hourglass_.form == HourglassForm::viscous && hourglass_.coefficient > 0.0)
+    hourglass_force_.assign(nn * D, 0.0);
+  viscosity_ = {model.run.viscosity_quadratic, model.run.viscosity_linear};
+  boundaries_ = BoundaryConditions<D>(model);
+  boundaries_.constrain(velocity_.data(), 0.0);
+
+  gather_element_state();
+  choose_time_step();
+  if (model.run.initial_dt > 0.0) {
+    dt_next_ = std::min(model.run.initial_dt, model.run.max_dt);
+    limit_.dt = dt_next_;
+    limit_.reason = "initial_dt";
+  }
+
+  double kinetic = 0.0;
+  for (std::size_t n = 0; n < nn; ++n)
+    for (int i = 0; i < D; ++i)
+      kinetic += 0.5 * node_mass_[n] * velocity_[n * D + static_cast<std::size_t>(i)] *
+                 velocity_[n * D + static_cast<std::size_t>(i)];
+  energy_.kinetic = kinetic;
+  energy_.internal = internal_energy_;
+  energy_.initial_total = kinetic + internal_energy_;
+}
+
+template <int D>
+void Solver<D>::limit_next_step(double dt_max) {
+  if (dt_max > 0.0 && dt_max < dt_next_) dt_next_ = dt_max;
+}
+
+template <int D>
+void Solver<D>::step() {
+  try {
+    add_forces();            // loads and element forces at t_n (SPH particle forces join here)
+    advance_velocities();    // a = F / m, v(n+1/2) by the central difference
+    constrain_velocities();  // fixed, prescribed, symmetry, axis at t_(n+1/2)
+    account_energy();        // kinetic, internal, hourglass, boundary work at t_n
+    advance_positions();     // x(n+1) = x(n) + v(n+1/2) dt
+    element_kinematics();    // V, rho at t_(n+1); D, W, q at mid-step (SPH kinematics beside it)
+    update_materials();      // EOS + strength + damage, one call per material batch
+    gather_element_state();  // sigma = s - p I, wave speeds, internal energy, dt vote
+    choose_time_step();      // dt(n+3/2) = CFL min l / (c + |v|), growth limited
+  } catch (NumericalError& error) {
+    if (error.cycle() < 0) error.set_context(cycle_, time_, "");
+    throw;
+  }
+}
+
+template <int D>
+void Solver<D>::fail(NumericalError error) const {
+  const std::string where =
+      error.kind() == EntityKind::element && error.id() >= 1
+          ? fmt::format("material '{}'",
+                        model_
+                            .materials[static_cast<std::size_t>(
+                                elements_.material[static_cast<std::size_t>(error.id() - 1)])]
+                            .name)
+          : std::string();
+  error.set_context(cycle_, time_, where);
+  throw error;
+}
+
+template <int D>
+void Solver<D>::add_forces() {
+  std::fill(force_.begin(), force_.end(), 0.0);
+  boundaries_.add_loads(position_.data(), time_, force_.data());
+  double* f_hourglass = nullptr;
+  if (!hourglass_force_.empty()) {
+    std::fill(hourglass_force_.begin(), hourglass_force_.end(), 0.0);
+    f_hourglass = hourglass_force_.data();
+  }
+  hourglass_stored_ = elements_.add_internal_forces(position_.data(), velocity_.data(), force_.data(),
+                                                    f_hourglass, hourglass_, dt_);
+}
+
+template <int D>
+void Solver<D>::advance_velocities() {
+  // Leapfrog with variable steps: the impulse at t_n spans the mean of the two half steps.
+  const double dt_mean = 0.5 * (dt_ + dt_next_);
+  const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
+#pragma omp parallel for schedule(static) if (nn > parallel_threshold)
+  for (std::int64_t n = 0; n < nn; ++n) {
+    const double inv_m =
+        node_mass_[static_cast<std::size_t>(n)] > 0.0 ? 1.0 / node_mass_[static_cast<std::size_t>(n)] : 0.0;
+    for (int i = 0; i < D; ++i) {
+      const std::size_t k = static_cast<std::size_t>(n * D + i);
+      const double a = force_[k] * inv_m;
+      acceleration_[k] = a;
+      velocity_old_[k] = velocity_[k];
+      velocity_[k] += a * dt_mean;
+    }
+  }
+}
+
+template <int D>
+void Solver<D>::constrain_velocities() {
+  const double dt_mean = 0.5 * (dt_ + dt_next_);
+  const double reaction_work = boundaries_.constrain(velocity_.data(), velocity_old_.data(),
+                                                     node_mass_.data(), time_ + 0.5 * dt_next_);
+  energy_.boundary_work +=
+      reaction_work + boundaries_.load_work(velocity_old_.data(), velocity_.data(), dt_mean);
+}
+
+template <int D>
+void Solver<D>::account_energy() {
+  // Time-centred kinetic energy at t_n, (1/2) m v(n-1/2) . v(n+1/2): with the
+  // internal energy at t_n it is what the central difference conserves. The
+  // hourglass forces at t_n work against the mean velocity over the impulse.
+  const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
+  const bool hourglass = !hourglass_force_.empty();
+  double kinetic = 0.0, hourglass_power = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) if (nn > parallel_threshold)
+  for (std::int64_t n = 0; n < nn; ++n) {
+    double vv = 0.0, fv = 0.0;
+    for (int i = 0; i < D; ++i) {
+      const std::size_t k = static_cast<std::size_t>(n * D + i);
+      vv += velocity_old_[k] * velocity_[k];
+      if (hourglass) fv += hourglass_force_[k] * (velocity_old_[k] + velocity_[k]);
+    }
+    kinetic += 0.5 * node_mass_[static_cast<std::size_t>(n)] * vv;
+    hourglass_power -= 0.5 * fv;
+  }
+  EnergyBalance& e = energy_;
+  e.kinetic = kinetic;
+  e.internal = internal_energy_;
+  hourglass_dissipated_ += hourglass_power * 0.5 * (dt_ + dt_next_);
+  e.hourglass = hourglass_dissipated_ + hourglass_stored_;
+  const double total = e.kinetic + e.internal + e.hourglass;
+  const double scale = std::max(e.initial_total + std::abs(e.boundary_work), std::abs(total));
+  e.relative_error = scale > 0.0 ? std::abs(total - e.initial_total - e.boundary_work) / scale : 0.0;
+}
+
+template <int D>
+void Solver<D>::advance_positions() {
+  const double dt = dt_next_;
+  const std::int64_t n = static_cast<std::int64_t>(position_.size());
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const double dx = velocity_[static_cast<std::size_t>(k)] * dt;
+    position_[static_cast<std::size_t>(k)] += dx;
+    displacement_[static_cast<std::size_t>(k)] += dx;
+  }
+  dt_ = dt;
+  time_ += dt;
+  ++cycle_;
+}
+
+template <int D>
+void Solver<D>::element_kinematics() {
+  const KinematicsResult r =
+      elements_.kinematics(position_.data(), velocity_.data(), dt_, viscosity_, batches_);
+  energy_.viscous += r.viscous_work;
+  if (r.bad_element >= 0)
+    fail(NumericalError(
+        EntityKind::element, r.bad_element + 1, "volume",
+        fmt::format("volume {:.6g} m^3 is not positive (element inverted or collapsed)", r.bad_volume)));
+}
+
+template <int D>
+void Solver<D>::update_materials() {
+  const MaterialContext ctx{dt_, time_};
+  for (std::size_t m = 0; m < batches_.size(); ++m)
+    if (batches_[m].size() > 0) model_.materials[m].material->update(batches_[m], ctx);
+}
+
+template <int D>
+void Solver<D>::gather_element_state() {
+  const std::int64_t ne = static_cast<std::int64_t>(elements_.size());
+  double internal = 0.0;
+  std::int64_t bad = std::numeric_limits<std::int64_t>::max();
+#pragma omp parallel for schedule(static) reduction(+ : internal) reduction(min : bad) if (ne > parallel_threshold)
+  for (std::int64_t k = 0; k < ne; ++k) {
+    const std::size_t e = static_cast<std::size_t>(k);
+    const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
+    const std::size_t p = elements_.point[e];
+    const double pressure = pts.pressure[p];
+    SymTensor s = pts.deviator[p];
+    s.xx -= pressure;
+    s.yy -= pressure;
+    s.zz -= pressure;
+    elements_.stress[e] = s;
+    elements_.wave_speed[e] = pts.wave_speed(p);
+    const double energy = elements_.mass[e] * pts.specific_energy[p];
+    internal += energy;
+    if (!std::isfinite(s.xx + s.yy + s.zz + s.xy + s.yz + s.zx) || !std::isfinite(elements_.wave_speed[e]) ||
+        !std::isfinite(energy))
+      bad = std::min(bad, k);
+  }
+  internal_energy_ = internal;
+  if (bad != std::numeric_limits<std::int64_t>::max()) {
+    const std::size_t e = static_cast<std::size_t>(bad);
+    const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
+    const std::size_t p = elements_.point[e];
+    fail(NumericalError(
+        EntityKind::element, bad + 1, "stress",
+        fmt::format("non-finite state: pressure {} Pa, specific energy {} J/kg, sound speed {} m/s",
+                    pts.pressure[p], pts.specific_energy[p], pts.sound_speed[p])));
+  }
+}
+
+template <int D>
+void Solver<D>::choose_time_step() {
+  // Smallest l / (c + |v|) over the elements; ties go to the lowest index so
+  // the limiting element does not depend on the thread count.
+  const std::int64_t ne = static_cast<std::int64_t>(elements_.size());
+  double best = std::numeric_limits<double>::infinity();
+  std::int64_t best_e = -1;
+#pragma omp parallel if (ne > parallel_threshold)
+  {
+    double local = std::numeric_limits<double>::infinity();
+    std::int64_t local_e = -1;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t k = 0; k < ne; ++k) {
+      const std::size_t e = static_cast<std::size_t>(k);
+      double t = elements_.length[e] / (elements_.wave_speed[e] + elements_.speed[e]);
+      if (!(t >= 0.0)) t = -1.0;  // NaN: this element is reported as the collapse
+      if (t < local) {
+        local = t;
+        local_e = k;
+      }
+    }
+#pragma omp critical
+    if (local_e >= 0 && (local < best || (local == best && local_e < best_e))) {
+      best = local;
+      best_e = local_e;
+    }
+  }
+  const RunControl& run = model_.run;
+  double dt = run.cfl * best;
+  std::string reason;
+  if (best_e >= 0) {
+    const auto m = static_cast<std::size_t>(elements_.material[static_cast<std::size_t>(best_e)]);
+    reason = fmt::format("element {} ({}): l/(c+|v|)", best_e + 1, model_.materials[m].name);
+  }
+  // Hold the step while the limit sits within 2 % above it: a step that
+  // follows |v| every cycle pumps energy in or out of a vibration (the
+  // central difference conserves energy only between changes of dt).
+  if (dt_ > 0.0 && dt >= dt_ && dt < 1.02 * dt_ && dt_ <= run.max_dt) dt = dt_;
+  if (dt_ > 0.0 && dt > run.dt_growth * dt_) {
+    dt = run.dt_growth * dt_;
+    reason = "growth limit dt_growth";
+  }
+  if (dt > run.max_dt) {
+    dt = run.max_dt;
+    reason = "max_dt";
+  }
+  if (!(dt > run.min_dt) || !std::isfinite(dt)) {
+    if (best_e >= 0)
+      fail(NumericalError(
+          EntityKind::element, best_e + 1, "time step",
+          fmt::format("dt {:.6g} s is below min_dt {:.6g} s (l = {:.6g} m, c = {:.6g} m/s, |v| = {:.6g} m/s)",
+                      dt, run.min_dt, elements_.length[static_cast<std::size_t>(best_e)],
+                      elements_.wave_speed[static_cast<std::size_t>(best_e)],
+                      elements_.speed[static_cast<std::size_t>(best_e)])));
+    fail(NumericalError(EntityKind::model, 0, "time step", fmt::format("dt {:.6g} s is not usable", dt)));
+  }
+  dt_next_ = dt;
+  limit_ = {dt, reason};
+}
+
+template <int D>
+FieldSnapshot Solver<D>::snapshot() const {
+  const std::size_t ne = elements_.size();
+  element_pressure_.resize(ne);
+  element_plastic_strain_.resize(ne);
+  element_damage_.resize(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
+    const std::size_t p = elements_.point[e];
+    element_pressure_[e] = pts.pressure[p];
+    element_plastic_strain_[e] = pts.plastic_strain[p];
+    element_damage_[e] = pts.damage[p];
+  }
+  FieldSnapshot s;
+  s.dimension = D;
+  s.mode = mode_;
+  s.time = time_;
+  s.cycle = cycle_;
+  s.node_position = position_;
+  s.node_displacement = displacement_;
+  s.node_velocity = velocity_;
+  s.node_acceleration = acceleration_;
+  s.nodes_per_element = FemElements<D>::nodes;
+  s.connectivity = elements_.connectivity;
+  s.element_density = elements_.density;
+  s.element_pressure = element_pressure_;
+  s.element_stress = elements_.stress;
+  s.element_plastic_strain = element_plastic_strain_;
+  s.element_damage = element_damage_;
+  s.element_material = elements_.material;
+  return s;
+}
+
+template class Solver<2>;
+template class Solver<3>;
+
+}  // namespace camouflet

@@ -1,0 +1,100 @@
+#pragma once
+// The explicit Lagrangian cycle (architecture.md; Wang et al. 2005, Fig. 4)
+// over FEM elements, driven one step at a time. run_model() drives it to the
+// end time with output; tests drive it cycle by cycle.
+//
+// SPH seam: particles join this cycle later. Their forces add to the nodal /
+// particle force stage (add_forces), their kinematics (density by continuity,
+// velocity gradient by kernel sums) slot in beside element_kinematics, and
+// their material points are further batches updated by update_materials.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "boundary/boundary_conditions.hpp"
+#include "fem/fem_elements.hpp"
+#include "materials/material_points.hpp"
+#include "model/model.hpp"
+#include "output/snapshot.hpp"
+#include "solver/run.hpp"
+
+namespace camouflet {
+
+template <int D>
+class Solver {
+ public:
+  // Builds nodes, elements and one MaterialPoints batch per material from
+  // the model. Throws InputError for an inverted element, a part without a
+  // material or an unknown boundary set.
+  explicit Solver(const Model& model);
+
+  // One cycle: t_n -> t_{n+1}. Throws NumericalError (with cycle and time)
+  // on a collapsed element, a non-finite state or a time-step collapse.
+  void step();
+
+  // Caps the next time step (the driver uses it to land on the end time).
+  void limit_next_step(double dt_max);
+
+  double time() const { return time_; }
+  std::int64_t cycle() const { return cycle_; }
+  double next_dt() const { return dt_next_; }
+  const TimeStepLimit& time_step_limit() const { return limit_; }
+  const EnergyBalance& energy() const { return energy_; }
+  FieldSnapshot snapshot() const;
+
+  // --- state, for tests and output ---
+  std::size_t node_count() const { return node_mass_.size(); }
+  const std::vector<double>& position() const { return position_; }
+  const std::vector<double>& velocity() const { return velocity_; }
+  std::vector<double>& velocity() { return velocity_; }  // tests impose initial fields
+  const std::vector<double>& displacement() const { return displacement_; }
+  const std::vector<double>& node_mass() const { return node_mass_; }
+  const FemElements<D>& elements() const { return elements_; }
+  const std::vector<MaterialPoints>& batches() const { return batches_; }
+
+ private:
+  // Stages of step(), in order.
+  void add_forces();
+  void advance_velocities();
+  void constrain_velocities();
+  void account_energy();
+  void advance_positions();
+  void element_kinematics();
+  void update_materials();
+  void gather_element_state();
+  void choose_time_step();
+
+  [[noreturn]] void fail(NumericalError error) const;
+
+  const Model& model_;
+  GeometryMode mode_;
+
+  // Nodes (SoA, n * D each).
+  std::vector<double> position_, velocity_, velocity_old_, acceleration_, force_, displacement_;
+  std::vector<double> hourglass_force_;  // N, the hourglass part of force_ (empty without control)
+  std::vector<double> node_mass_;        // kg (plane strain: per metre of depth)
+
+  FemElements<D> elements_;
+  std::vector<MaterialPoints> batches_;  // one per Model::materials entry
+  BoundaryConditions<D> boundaries_;
+  HourglassControl hourglass_;
+  ViscosityControl viscosity_;
+
+  // Snapshot buffers gathered from the material batches.
+  mutable std::vector<double> element_pressure_, element_plastic_strain_, element_damage_;
+
+  double time_ = 0.0;
+  std::int64_t cycle_ = 0;
+  double dt_ = 0.0;       // s, the step just taken (t_{n-1/2})
+  double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
+  TimeStepLimit limit_;
+  EnergyBalance energy_;
+  double internal_energy_ = 0.0;       // J, sum m e at t_n
+  double hourglass_stored_ = 0.0;      // J, stiffness-form hourglass energy at t_n
+  double hourglass_dissipated_ = 0.0;  // J, work absorbed by the viscous form
+};
+
+extern template class Solver<2>;
+extern template class Solver<3>;
+
+}  // namespace camouflet

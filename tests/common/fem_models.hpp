@@ -1,0 +1,85 @@
+#pragma once
+// Small models built in code for the FEM and solver tests (no case reader):
+// one elastic or elastic-plastic material, blocks from the block generator,
+// boundary conditions by set name.
+#include <omp.h>
+
+#include <memory>
+#include <string>
+
+#include "materials/elastic_strength.hpp"
+#include "materials/linear_eos.hpp"
+#include "mesh/block_generator.hpp"
+#include "model/model.hpp"
+
+namespace camouflet::test {
+
+// The verification problems are small: one thread avoids team start-up
+// costs (the shared material loops have no size threshold).
+inline void use_threads(int n) {
+  omp_set_num_threads(n);
+}
+
+struct ElasticConstants {
+  double density = 2000.0;       // kg/m^3
+  double bulk_modulus = 2.0e9;   // Pa
+  double shear_modulus = 1.5e9;  // Pa
+  double yield_stress = 0.0;     // Pa; 0 = elastic
+  double p_wave_speed() const { return std::sqrt((bulk_modulus + 4.0 * shear_modulus / 3.0) / density); }
+  double bulk_wave_speed() const { return std::sqrt(bulk_modulus / density); }
+  double lame_lambda() const { return bulk_modulus - 2.0 * shear_modulus / 3.0; }
+};
+
+inline std::shared_ptr<const Material> elastic_material(const ElasticConstants& c,
+                                                        const std::string& name = "solid") {
+  auto eos = std::make_shared<const LinearEos>(c.density, c.bulk_modulus);
+  std::shared_ptr<const StrengthModel> strength;
+  if (c.yield_stress > 0.0)
+    strength = std::make_shared<const VonMisesStrength>(c.shear_modulus, c.yield_stress);
+  else
+    strength = std::make_shared<const ElasticStrength>(c.shear_modulus);
+  return std::make_shared<const Material>(name, eos, strength);
+}
+
+// A model of one part made of the given blocks (all of part 0).
+inline Model block_model(GeometryMode mode, const std::vector<BlockSpec>& blocks, const ElasticConstants& c) {
+  Model model;
+  model.run.mode = mode;
+  model.mesh.dimension = dimension_of(mode);
+  for (const auto& b : blocks) add_block(model.mesh, b);
+  model.materials.push_back({"solid", elastic_material(c), {}});
+  Part part;
+  part.name = blocks.front().name;
+  part.material = 0;
+  model.parts.push_back(part);
+  return model;
+}
+
+inline BoundaryCondition symmetry(const std::string& set, std::array<double, 3> normal) {
+  BoundaryCondition bc;
+  bc.kind = BoundaryKind::symmetry;
+  bc.set = set;
+  bc.normal = normal;
+  return bc;
+}
+
+inline BoundaryCondition velocity(const std::string& set, int component, double value) {
+  BoundaryCondition bc;
+  bc.kind = BoundaryKind::velocity;
+  bc.set = set;
+  bc.components[static_cast<std::size_t>(component)] = true;
+  bc.value[static_cast<std::size_t>(component)] = value;
+  return bc;
+}
+
+inline BoundaryCondition pressure(const std::string& face_set, double p,
+                                  std::optional<TimeHistory> history = {}) {
+  BoundaryCondition bc;
+  bc.kind = BoundaryKind::pressure;
+  bc.set = face_set;
+  bc.value[0] = p;
+  bc.history = std::move(history);
+  return bc;
+}
+
+}  // namespace camouflet::test

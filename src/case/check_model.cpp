@@ -1,0 +1,108 @@
+// Whole-model checks before the first cycle (style.md #4, "everything is
+// checked before the first cycle"): what no single section can see alone.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "case/sections.hpp"
+#include "model/isoparametric.hpp"
+
+namespace camouflet::case_detail {
+
+namespace {
+
+void check_densities(const Model& model) {
+  for (const auto& m : model.materials) {
+    const double rho = m.material->reference_density();
+    if (!(rho > 0.0) || !std::isfinite(rho)) {
+      SourceLocation w = m.where;
+      w.key += ".eos.density";
+      throw InputError(
+          w, fmt::format("material '{}' has reference density {} kg/m^3; it must be positive", m.name, rho));
+    }
+  }
+}
+
+// An element is usable only when its Jacobian is positive at every corner:
+// a negative corner value means a folded (inverted or re-entrant) element, a
+// (near) zero one a collapsed edge or face; either breaks the one-point
+// integration and the time step.
+void check_elements(const Model& model) {
+  const FemMesh& mesh = model.mesh;
+  const int dim = mesh.dimension, npe = mesh.nodes_per_element;
+  double nodes[24];
+  for (std::size_t e = 0; e < mesh.element_count(); ++e) {
+    gather_element(dim, mesh.coordinates, mesh.connectivity, static_cast<std::int64_t>(e), nodes);
+    double extent = 0.0;
+    for (int i = 0; i < dim; ++i) {
+      double lo = nodes[i], hi = nodes[i];
+      for (int a = 1; a < npe; ++a) {
+        lo = std::min(lo, nodes[a * dim + i]);
+        hi = std::max(hi, nodes[a * dim + i]);
+      }
+      extent = std::max(extent, hi - lo);
+    }
+    // Corner Jacobians scale like (size/2)^dim; below 1e-8 of that the element is degenerate.
+    const double scale = std::pow(0.5 * extent, dim);
+    const std::span<const double> x(nodes, static_cast<std::size_t>(npe * dim));
+    const Part& part = model.parts[static_cast<std::size_t>(mesh.element_part[e])];
+    for (int a = 0; a < npe; ++a) {
+      const double j = jacobian_determinant(dim, x, corner_natural(dim, a));
+      const auto node =
+          mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(a)] + 1;
+      if (!std::isfinite(j))
+        throw InputError(part.where, fmt::format("element {} of part '{}' has non-finite node coordinates",
+                                                 e + 1, part.name));
+      if (!(extent > 0.0) || std::abs(j) <= 1e-8 * scale)
+        throw InputError(
+            part.where,
+            fmt::format("element {} of part '{}' is degenerate: zero Jacobian at its corner node {} "
+                        "(collapsed edge or face)",
+                        e + 1, part.name, node));
+      if (j < 0.0)
+        throw InputError(
+            part.where,
+            fmt::format("element {} of part '{}' is inverted: negative Jacobian {:.3e} at its corner "
+                        "node {} (nodes out of order or a re-entrant corner)",
+                        e + 1, part.name, j, node));
+    }
+  }
+}
+
+void check_gauges(const Model& model) {
+  const FemMesh& mesh = model.mesh;
+  for (const auto& group : model.gauges)
+    for (const auto& g : group.points) {
+      const std::span<const double> x(g.position.data(), static_cast<std::size_t>(mesh.dimension));
+      if (!locate_point(mesh.dimension, mesh.coordinates, mesh.connectivity, x))
+        throw InputError(g.where, fmt::format("gauge '{}' of group '{}' at ({}) lies outside the mesh",
+                                              g.name, group.name, fmt::join(x.begin(), x.end(), ", ")));
+    }
+}
+
+void check_axisymmetric(const Model& model) {
+  if (model.run.mode != GeometryMode::axisymmetric) return;
+  const FemMesh& mesh = model.mesh;
+  for (std::size_t n = 0; n < mesh.node_count(); ++n)
+    if (mesh.coordinates[2 * n] < -1e-12) {
+      for (std::size_t e = 0; e < mesh.element_count(); ++e)
+        for (int a = 0; a < 4; ++a)
+          if (mesh.connectivity[4 * e + static_cast<std::size_t>(a)] == static_cast<std::int64_t>(n)) {
+            const Part& part = model.parts[static_cast<std::size_t>(mesh.element_part[e])];
+            throw InputError(part.where, fmt::format("element {} of part '{}' has node {} at r = {} < 0; an "
+                                                     "axisymmetric mesh lies in r >= 0",
+                                                     e + 1, part.name, n + 1, mesh.coordinates[2 * n]));
+          }
+    }
+}
+
+}  // namespace
+
+void check_model(const Model& model) {
+  check_densities(model);
+  check_elements(model);
+  check_axisymmetric(model);
+  check_gauges(model);
+}
+
+}  // namespace camouflet::case_detail

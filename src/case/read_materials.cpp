@@ -1,0 +1,41 @@
+// [materials.NAME] with its eos / strength / damage blocks, or a preset.
+#include <fmt/format.h>
+
+#include "case/sections.hpp"
+#include "materials/registry.hpp"
+
+namespace camouflet::case_detail {
+
+namespace {
+
+Parameters block_parameters(TomlReader& material, const char* key) {
+  if (auto block = material.table(key)) return block->parameters();
+  SourceLocation w = material.where();
+  w.key = material.key_path(key);
+  return Parameters(w);
+}
+
+}  // namespace
+
+void read_materials(TomlReader& materials, Model& model) {
+  for (const std::string& name : materials.keys()) {
+    auto material = materials.table(name);
+    check_name(materials, name, name);
+    const SourceLocation preset_where = material->where("preset");
+    const std::string preset = material->string("preset", "");
+    Parameters eos = block_parameters(*material, "eos");
+    Parameters strength = block_parameters(*material, "strength");
+    Parameters damage = block_parameters(*material, "damage");
+    material->finish();
+    if (preset.empty() && eos.keys().empty())
+      throw InputError(material->where("eos"),
+                       fmt::format("material '{}' needs an [materials.{}.eos] block with a "
+                                   "type (or a preset)",
+                                   name, name));
+    auto built =
+        make_material(name, preset, preset_where, std::move(eos), std::move(strength), std::move(damage));
+    model.materials.push_back({name, std::move(built), material->where()});
+  }
+}
+
+}  // namespace camouflet::case_detail

@@ -13,5 +13,6 @@ struct CommandResult {
 void add_run_command(CLI::App& app, CommandResult& result);
 void add_check_command(CLI::App& app, CommandResult& result);
 void add_empirical_command(CLI::App& app, CommandResult& result);
+void add_material_test_command(CLI::App& app, CommandResult& result);
 
 }  // namespace camouflet::app

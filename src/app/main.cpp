@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   camouflet::app::add_run_command(app, result);
   camouflet::app::add_check_command(app, result);
   camouflet::app::add_empirical_command(app, result);
+  camouflet::app::add_material_test_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -6,7 +6,10 @@ namespace camouflet {
 
 Material::Material(std::string name, std::shared_ptr<const EquationOfState> eos,
                    std::shared_ptr<const StrengthModel> strength, std::shared_ptr<const DamageModel> damage)
-    : name_(std::move(name)), eos_(std::move(eos)), strength_(std::move(strength)), damage_(std::move(damage)) {
+    : name_(std::move(name)),
+      eos_(std::move(eos)),
+      strength_(std::move(strength)),
+      damage_(std::move(damage)) {
   if (!eos_) throw std::invalid_argument("material '" + name_ + "' has no equation of state");
 }
 

@@ -58,16 +58,18 @@ std::shared_ptr<const Material> make_material(const std::string& name, const std
     const auto* f = preset_registry().find(preset);
     if (!f) {
       const std::string guess = nearest(preset, preset_registry().names());
-      throw InputError(preset_where, guess.empty() ? fmt::format("unknown material preset '{}'", preset)
-                                                   : fmt::format("unknown material preset '{}'; did you mean '{}'?",
-                                                                 preset, guess));
+      throw InputError(preset_where,
+                       guess.empty()
+                           ? fmt::format("unknown material preset '{}'", preset)
+                           : fmt::format("unknown material preset '{}'; did you mean '{}'?", preset, guess));
     }
     const MaterialPreset p = (*f)();
     eos.merge_defaults(p.eos);
     strength.merge_defaults(p.strength);
     damage.merge_defaults(p.damage);
   }
-  if (!eos.has("type")) throw InputError(eos.where("type"), "material '" + name + "' needs an eos block with a type");
+  if (!eos.has("type"))
+    throw InputError(eos.where("type"), "material '" + name + "' needs an eos block with a type");
   auto e = make_eos(eos);
   for (Parameters* block : {&strength, &damage})
     if (!block->keys().empty() && !block->has("type"))

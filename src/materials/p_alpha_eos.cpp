@@ -173,7 +173,7 @@ PAlphaState PAlphaEos::solve(double rho, double e, double alpha_p, long point) c
   return s;
 }
 
-double PAlphaEos::sound_speed(double rho, double e, const PAlphaState& st, double /*alpha_p_before*/) const {
+double PAlphaEos::sound_speed(double rho, double e, const PAlphaState& st) const {
   // c^2 = dp/drho along the isentrope (de = p drho / rho^2), by a one-sided
   // difference on the branch: unloading (elastic) always; on the crush curve
   // the larger of the crush tangent and the elastic unloading one, so that the
@@ -201,7 +201,7 @@ void PAlphaEos::evaluate(MaterialPoints& pts, const MaterialContext& /*ctx*/, bo
     try {
       const PAlphaState st = solve(pts.density[i], pts.specific_energy[i], alpha_p[i], static_cast<long>(i));
       pts.pressure[i] = st.pressure;
-      pts.sound_speed[i] = sound_speed(pts.density[i], pts.specific_energy[i], st, alpha_p[i]);
+      pts.sound_speed[i] = sound_speed(pts.density[i], pts.specific_energy[i], st);
       if (commit) alpha_p[i] = st.plastic_distension;  // irreversible: never increases
     } catch (const NumericalError& err) {
       long expected = -1;

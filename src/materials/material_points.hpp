@@ -46,15 +46,15 @@ struct MaterialPoints {
   std::vector<double> characteristic_length;  // m, element size or smoothing length
 
   // --- state written by the material update ---
-  std::vector<double> specific_energy;   // J/kg, internal energy per unit mass
-  std::vector<double> pressure;          // Pa, compression positive
-  std::vector<SymTensor> deviator;       // Pa, deviatoric stress s; sigma = s - p I
-  std::vector<double> sound_speed;       // m/s, bulk sound speed from the EOS
-  std::vector<double> shear_modulus;     // Pa, current shear modulus (0 for fluids)
-  std::vector<double> plastic_strain;    // effective (equivalent) plastic strain
+  std::vector<double> specific_energy;      // J/kg, internal energy per unit mass
+  std::vector<double> pressure;             // Pa, compression positive
+  std::vector<SymTensor> deviator;          // Pa, deviatoric stress s; sigma = s - p I
+  std::vector<double> sound_speed;          // m/s, bulk sound speed from the EOS
+  std::vector<double> shear_modulus;        // Pa, current shear modulus (0 for fluids)
+  std::vector<double> plastic_strain;       // effective (equivalent) plastic strain
   std::vector<double> plastic_strain_rate;  // 1/s
-  std::vector<double> damage;            // 0 intact .. 1 fully damaged
-  std::vector<double> temperature;       // K
+  std::vector<double> damage;               // 0 intact .. 1 fully damaged
+  std::vector<double> temperature;          // K
 
   // Scratch used by the energy equation inside one update (not state).
   std::vector<double> specific_energy_start;

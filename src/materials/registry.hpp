@@ -73,14 +73,15 @@ std::shared_ptr<const Material> make_material(const std::string& name, const std
 
 #define CAMOUFLET_CONCAT_INNER(a, b) a##b
 #define CAMOUFLET_CONCAT(a, b) CAMOUFLET_CONCAT_INNER(a, b)
-#define CAMOUFLET_REGISTER_EOS(name, factory) \
-  static const bool CAMOUFLET_CONCAT(camouflet_eos_registered_, __LINE__) = ::camouflet::eos_registry().add(name, factory)
-#define CAMOUFLET_REGISTER_STRENGTH(name, factory)                          \
+#define CAMOUFLET_REGISTER_EOS(name, factory)                               \
+  static const bool CAMOUFLET_CONCAT(camouflet_eos_registered_, __LINE__) = \
+      ::camouflet::eos_registry().add(name, factory)
+#define CAMOUFLET_REGISTER_STRENGTH(name, factory)                               \
   static const bool CAMOUFLET_CONCAT(camouflet_strength_registered_, __LINE__) = \
       ::camouflet::strength_registry().add(name, factory)
-#define CAMOUFLET_REGISTER_DAMAGE(name, factory)                          \
+#define CAMOUFLET_REGISTER_DAMAGE(name, factory)                               \
   static const bool CAMOUFLET_CONCAT(camouflet_damage_registered_, __LINE__) = \
       ::camouflet::damage_registry().add(name, factory)
-#define CAMOUFLET_REGISTER_PRESET(name, factory)                          \
+#define CAMOUFLET_REGISTER_PRESET(name, factory)                               \
   static const bool CAMOUFLET_CONCAT(camouflet_preset_registered_, __LINE__) = \
       ::camouflet::preset_registry().add(name, factory)

@@ -1,0 +1,81 @@
+#include "sph/artificial_stress.hpp"
+
+#include <cmath>
+
+namespace camouflet::sph {
+
+void symmetric_eigen(const SymTensor& s, double values[3], double vectors[3][3]) {
+  double a[3][3] = {{s.xx, s.xy, s.zx}, {s.xy, s.yy, s.yz}, {s.zx, s.yz, s.zz}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) vectors[i][j] = i == j ? 1.0 : 0.0;
+  for (int sweep = 0; sweep < 30; ++sweep) {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+    if (off <= 1e-30 * diag || off == 0.0) break;
+    for (int p = 0; p < 2; ++p)
+      for (int q = p + 1; q < 3; ++q) {
+        if (a[p][q] == 0.0) continue;
+        // Rotation that zeroes a[p][q] (Golub & Van Loan, symmetric Schur decomposition).
+        const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
+        for (int k = 0; k < 3; ++k) {
+          const double akp = a[k][p], akq = a[k][q];
+          a[k][p] = c * akp - sn * akq;
+          a[k][q] = sn * akp + c * akq;
+        }
+        for (int k = 0; k < 3; ++k) {
+          const double apk = a[p][k], aqk = a[q][k];
+          a[p][k] = c * apk - sn * aqk;
+          a[q][k] = sn * apk + c * aqk;
+        }
+        for (int k = 0; k < 3; ++k) {
+          const double vkp = vectors[k][p], vkq = vectors[k][q];
+          vectors[k][p] = c * vkp - sn * vkq;
+          vectors[k][q] = sn * vkp + c * vkq;
+        }
+      }
+  }
+  for (int k = 0; k < 3; ++k) values[k] = a[k][k];
+}
+
+template <>
+SymTensor artificial_stress<2>(const SymTensor& s, double epsilon, double scale) {
+  // In-plane principal stresses of [[xx, xy], [xy, yy]].
+  const double mean = 0.5 * (s.xx + s.yy);
+  const double half_diff = 0.5 * (s.xx - s.yy);
+  const double radius = std::sqrt(half_diff * half_diff + s.xy * s.xy);
+  const double s1 = mean + radius, s2 = mean - radius;
+  const double r1 = s1 > 0.0 ? -epsilon * s1 * scale : 0.0;
+  const double r2 = s2 > 0.0 ? -epsilon * s2 * scale : 0.0;
+  if (r1 == 0.0 && r2 == 0.0) return {};
+  const double angle = 0.5 * std::atan2(s.xy, half_diff);  // direction of s1
+  const double c = std::cos(angle), sn = std::sin(angle);
+  SymTensor r;
+  r.xx = r1 * c * c + r2 * sn * sn;
+  r.yy = r1 * sn * sn + r2 * c * c;
+  r.xy = (r1 - r2) * c * sn;
+  return r;
+}
+
+template <>
+SymTensor artificial_stress<3>(const SymTensor& s, double epsilon, double scale) {
+  double values[3], q[3][3];
+  symmetric_eigen(s, values, q);
+  double r_principal[3];
+  bool any = false;
+  for (int k = 0; k < 3; ++k) {
+    r_principal[k] = values[k] > 0.0 ? -epsilon * values[k] * scale : 0.0;
+    any = any || r_principal[k] != 0.0;
+  }
+  if (!any) return {};
+  auto component = [&](int i, int j) {
+    double v = 0.0;
+    for (int k = 0; k < 3; ++k) v += q[i][k] * r_principal[k] * q[j][k];
+    return v;
+  };
+  return {component(0, 0), component(1, 1), component(2, 2),
+          component(0, 1), component(1, 2), component(2, 0)};
+}
+
+}  // namespace camouflet::sph

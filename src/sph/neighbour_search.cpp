@@ -1,0 +1,186 @@
+#include "sph/neighbour_search.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sph/kernel.hpp"
+
+namespace camouflet::sph {
+
+namespace {
+
+template <int D>
+struct CellGrid {
+  Vec<D> origin;
+  double size = 1.0;
+  std::array<std::int64_t, D> dims{};
+
+  std::array<std::int64_t, D> cell_of(const Vec<D>& x) const {
+    std::array<std::int64_t, D> c{};
+    for (int d = 0; d < D; ++d) {
+      c[d] = static_cast<std::int64_t>(std::floor((x[d] - origin[d]) / size));
+      c[d] = std::clamp<std::int64_t>(c[d], 0, dims[d] - 1);
+    }
+    return c;
+  }
+  std::int64_t index(const std::array<std::int64_t, D>& c) const {
+    std::int64_t k = 0;
+    for (int d = D - 1; d >= 0; --d) k = k * dims[d] + c[d];
+    return k;
+  }
+  std::int64_t count() const {
+    std::int64_t n = 1;
+    for (int d = 0; d < D; ++d) n *= dims[d];
+    return n;
+  }
+};
+
+template <int D>
+double squared_distance(const Vec<D>& a, const Vec<D>& b) {
+  double s = 0.0;
+  for (int d = 0; d < D; ++d) s += (a[d] - b[d]) * (a[d] - b[d]);
+  return s;
+}
+
+}  // namespace
+
+template <int D>
+void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double> h, std::size_t n_owned,
+                               double skin) {
+  const std::size_t n = x.size();
+  if (h.size() != n || n_owned > n) throw std::invalid_argument("neighbour search: inconsistent array sizes");
+  if (n >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("neighbour search: too many points");
+  n_owned_ = n_owned;
+  skin_ = skin;
+  ++builds_;
+  x_build_.assign(x.begin(), x.end());
+  h_build_.assign(h.begin(), h.end());
+  offset_.assign(n_owned + 1, 0);
+  list_.clear();
+  sorted_.clear();
+  if (n == 0) return;
+
+  // Grid: cell edge = the largest interaction radius, so that all partners lie
+  // in the 3^D surrounding cells.
+  CellGrid<D> grid;
+  Vec<D> lo = x[0], hi = x[0];
+  double h_max = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::min(lo[d], x[i][d]);
+      hi[d] = std::max(hi[d], x[i][d]);
+    }
+    h_max = std::max(h_max, h[i]);
+  }
+  grid.origin = lo;
+  grid.size = support_factor * h_max + skin;
+  if (!(grid.size > 0.0)) grid.size = 1.0;
+  // Keep the grid at most a few cells per point (a few far-flung points must not blow it up).
+  for (;;) {
+    std::int64_t total = 1;
+    for (int d = 0; d < D; ++d) {
+      grid.dims[d] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[d] - lo[d]) / grid.size) + 1);
+      total *= grid.dims[d];
+    }
+    if (total <= 4 * static_cast<std::int64_t>(n) + 64) break;
+    grid.size *= 1.5;
+  }
+
+  // Counting sort of the points by cell.
+  const std::int64_t n_cells = grid.count();
+  std::vector<std::int64_t> cell(n);
+  std::vector<std::size_t> cell_start(static_cast<std::size_t>(n_cells) + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    cell[i] = grid.index(grid.cell_of(x[i]));
+    ++cell_start[static_cast<std::size_t>(cell[i]) + 1];
+  }
+  for (std::int64_t c = 0; c < n_cells; ++c) cell_start[c + 1] += cell_start[c];
+  sorted_.resize(n);
+  {
+    std::vector<std::size_t> fill(cell_start.begin(), cell_start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+      sorted_[fill[static_cast<std::size_t>(cell[i])]++] = static_cast<std::uint32_t>(i);
+  }
+
+  // Visits every candidate j of point i within the 3^D cells around it.
+  auto visit = [&](std::size_t i, auto&& on_pair) {
+    const auto ci = grid.cell_of(x[i]);
+    std::array<std::int64_t, D> c{};
+    const int n_offsets = D == 2 ? 9 : 27;
+    for (int o = 0; o < n_offsets; ++o) {
+      int rest = o;
+      bool inside = true;
+      for (int d = 0; d < D; ++d) {
+        c[d] = ci[d] + (rest % 3) - 1;
+        rest /= 3;
+        if (c[d] < 0 || c[d] >= grid.dims[d]) inside = false;
+      }
+      if (!inside) continue;
+      const auto k = static_cast<std::size_t>(grid.index(c));
+      for (std::size_t s = cell_start[k]; s < cell_start[k + 1]; ++s) {
+        const std::uint32_t j = sorted_[s];
+        if (j == i) continue;
+        const double reach = support_factor * pair_smoothing_length(h[i], h[j]) + skin;
+        if (squared_distance(x[i], x[j]) < reach * reach) on_pair(j);
+      }
+    }
+  };
+
+  // Two passes (count, then fill) so that each thread writes its own slots.
+  std::vector<std::size_t> count(n_owned, 0);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n_owned; ++i) {
+    std::size_t k = 0;
+    visit(i, [&](std::uint32_t) { ++k; });
+    count[i] = k;
+  }
+  for (std::size_t i = 0; i < n_owned; ++i) offset_[i + 1] = offset_[i] + count[i];
+  list_.resize(offset_[n_owned]);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n_owned; ++i) {
+    std::size_t k = offset_[i];
+    visit(i, [&](std::uint32_t j) { list_[k++] = j; });
+    std::sort(list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]),
+              list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]));
+  }
+}
+
+template <int D>
+bool NeighbourSearch<D>::needs_rebuild(std::span<const Vec<D>> x, std::span<const double> h) const {
+  if (x.size() != x_build_.size() || builds_ == 0) return true;
+  double d2_max = 0.0, dh_max = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    d2_max = std::max(d2_max, squared_distance(x[i], x_build_[i]));
+    dh_max = std::max(dh_max, h[i] - h_build_[i]);
+  }
+  return 2.0 * std::sqrt(d2_max) + support_factor * dh_max > skin_;
+}
+
+template <int D>
+std::vector<std::vector<std::uint32_t>> brute_force_neighbours(std::span<const Vec<D>> x,
+                                                               std::span<const double> h, std::size_t n_owned,
+                                                               double skin) {
+  std::vector<std::vector<std::uint32_t>> out(n_owned);
+  for (std::size_t i = 0; i < n_owned; ++i)
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      if (i == j) continue;
+      const double reach = support_factor * pair_smoothing_length(h[i], h[j]) + skin;
+      if (squared_distance(x[i], x[j]) < reach * reach) out[i].push_back(static_cast<std::uint32_t>(j));
+    }
+  return out;
+}
+
+template class NeighbourSearch<2>;
+template class NeighbourSearch<3>;
+template std::vector<std::vector<std::uint32_t>> brute_force_neighbours<2>(std::span<const Vec<2>>,
+                                                                           std::span<const double>,
+                                                                           std::size_t, double);
+template std::vector<std::vector<std::uint32_t>> brute_force_neighbours<3>(std::span<const Vec<3>>,
+                                                                           std::span<const double>,
+                                                                           std::size_t, double);
+
+}  // namespace camouflet::sph

@@ -1,0 +1,34 @@
+#include "sph/sph_options.hpp"
+
+#include <stdexcept>
+
+namespace camouflet::sph {
+
+SphOptions read_sph_options(Parameters& block) {
+  SphOptions o;
+  if (block.has("kernel")) {
+    try {
+      o.kernel = kernel_from_name(block.string("kernel"));
+    } catch (const std::invalid_argument& e) {
+      block.fail("kernel", e.what());
+    }
+  }
+  o.smoothing_factor = block.positive("smoothing_factor", o.smoothing_factor);
+  o.variable_smoothing_length = block.flag("variable_smoothing_length", o.variable_smoothing_length);
+  o.h_min_factor = block.positive("h_min_factor", o.h_min_factor);
+  o.h_max_factor = block.positive("h_max_factor", o.h_max_factor);
+  if (o.h_min_factor > o.h_max_factor)
+    block.fail("h_min_factor", "smoothing-length bounds inverted: h_min_factor > h_max_factor");
+  o.viscosity_alpha = block.non_negative("viscosity_alpha", o.viscosity_alpha);
+  o.viscosity_beta = block.non_negative("viscosity_beta", o.viscosity_beta);
+  o.artificial_stress = block.flag("artificial_stress", o.artificial_stress);
+  o.artificial_stress_epsilon =
+      block.in_range("artificial_stress_epsilon", 0.0, 1.0, o.artificial_stress_epsilon);
+  o.artificial_stress_power = block.positive("artificial_stress_power", o.artificial_stress_power);
+  o.xsph = block.in_range("xsph", 0.0, 1.0, o.xsph);
+  o.kernel_correction = block.flag("kernel_correction", o.kernel_correction);
+  o.skin_factor = block.non_negative("skin_factor", o.skin_factor);
+  return o;
+}
+
+}  // namespace camouflet::sph

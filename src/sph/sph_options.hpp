@@ -1,0 +1,41 @@
+#pragma once
+// Numerical settings of the SPH package, with the defaults of the literature.
+#include "core/parameters.hpp"
+#include "sph/kernel.hpp"
+
+namespace camouflet::sph {
+
+struct SphOptions {
+  KernelKind kernel = KernelKind::cubic_spline;
+  // Initial smoothing length h0 = smoothing_factor x particle spacing. 1.2 puts
+  // ~2.4 spacings inside the support 2h: ~20 neighbours in 2-D, ~60 in 3-D
+  // (Monaghan 2005, Rep. Prog. Phys. 68, section 2.3 suggests h ~ 1.2-1.5 dx).
+  double smoothing_factor = 1.2;
+  // Variable smoothing length h = h0 (rho0 / rho)^(1/d) (Monaghan 2005, eq. 2.19
+  // in its SPH-summation form), kept within [h_min_factor, h_max_factor] x h0.
+  bool variable_smoothing_length = true;
+  double h_min_factor = 0.25;
+  double h_max_factor = 4.0;
+  // Monaghan artificial viscosity (Monaghan 1992, eq. 4.2): Pi_ij = (-alpha c mu + beta mu^2) / rho_ij.
+  double viscosity_alpha = 1.0;
+  double viscosity_beta = 2.0;
+  // Artificial stress against the tensile instability (Gray, Monaghan & Swift
+  // 2001, CMAME 190, eqs. 3.1-3.3; Monaghan 2000, JCP 159): R = -eps sigma'/rho^2
+  // on tensile principal stresses, weighted by (W(r)/W(dp))^n.
+  bool artificial_stress = true;
+  double artificial_stress_epsilon = 0.3;
+  double artificial_stress_power = 4.0;
+  // XSPH velocity smoothing for the position update (Monaghan 1989); 0 = off.
+  double xsph = 0.0;
+  // Kernel-gradient correction of the velocity gradient (Randles & Libersky
+  // 1996, CMAME 139; Bonet & Lok 1999): exact for linear velocity fields.
+  bool kernel_correction = false;
+  // Neighbour-list skin as a fraction of the smallest initial smoothing length.
+  double skin_factor = 0.3;
+};
+
+// Reads the optional keys of an `[sph]` block (names as the members above;
+// `kernel` a string). Bounds inverted or out of range -> InputError naming the key.
+SphOptions read_sph_options(Parameters& block);
+
+}  // namespace camouflet::sph

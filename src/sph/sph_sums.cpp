@@ -1,0 +1,268 @@
+// The particle sums of one cycle (equations in sph_system.hpp): forces,
+// position update with optional XSPH, and the kinematics that feed the shared
+// material update.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "sph/artificial_stress.hpp"
+#include "sph/sph_system.hpp"
+
+namespace camouflet::sph {
+
+namespace {
+
+// sigma . g for the in-plane (D = 2) or full (D = 3) components.
+template <int D>
+inline Vec<D> contract_vector(const SymTensor& s, const Vec<D>& g) {
+  Vec<D> out;
+  if constexpr (D == 2) {
+    out[0] = s.xx * g[0] + s.xy * g[1];
+    out[1] = s.xy * g[0] + s.yy * g[1];
+  } else {
+    out[0] = s.xx * g[0] + s.xy * g[1] + s.zx * g[2];
+    out[1] = s.xy * g[0] + s.yy * g[1] + s.yz * g[2];
+    out[2] = s.zx * g[0] + s.yz * g[1] + s.zz * g[2];
+  }
+  return out;
+}
+
+template <int D>
+bool invert(const double m[D][D], double inv[D][D]) {
+  if constexpr (D == 2) {
+    const double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    if (!(std::abs(det) > 1e-12)) return false;
+    inv[0][0] = m[1][1] / det;
+    inv[0][1] = -m[0][1] / det;
+    inv[1][0] = -m[1][0] / det;
+    inv[1][1] = m[0][0] / det;
+  } else {
+    const double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+    const double c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+    const double c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+    const double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+    if (!(std::abs(det) > 1e-12)) return false;
+    inv[0][0] = c00 / det;
+    inv[1][0] = c01 / det;
+    inv[2][0] = c02 / det;
+    inv[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det;
+    inv[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det;
+    inv[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det;
+    inv[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det;
+    inv[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det;
+    inv[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det;
+  }
+  return true;
+}
+
+}  // namespace
+
+template <int D>
+void SphSystem<D>::compute_accelerations() {
+  const std::size_t n = p_.real;
+  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
+  if (options_.artificial_stress) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double eta = p_.planar_density[i];
+      p_.tensile_term[i] = artificial_stress<D>(p_.stress[i], options_.artificial_stress_epsilon,
+                                                geometric_weight(p_.position[i]) / (eta * eta));
+    }
+  }
+  prepare_neighbours();
+
+  const double alpha = options_.viscosity_alpha, beta = options_.viscosity_beta;
+  const bool tensile = options_.artificial_stress;
+  const double power = options_.artificial_stress_power;
+  const double factor = options_.smoothing_factor;
+  const auto& x = p_.position;
+  const auto& v = p_.velocity;
+  const auto& m = p_.mass;
+  const auto& eta = p_.planar_density;
+  const auto& h = p_.smoothing_length;
+#pragma omp parallel for schedule(dynamic, 128)
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec<D> acc{};
+    double heat = 0.0, mu_max = 0.0;
+    int count = 0;
+    for (const std::uint32_t j : search_.neighbours(i)) {
+      const Vec<D> dx = x[i] - x[j];
+      const double r2 = dot(dx, dx);
+      const double hij = pair_smoothing_length(h[i], h[j]);
+      if (r2 >= support_factor * support_factor * hij * hij) continue;
+      ++count;
+      const double r = std::sqrt(r2);
+      const Vec<D> grad = dx * kernel_.gradient_factor(r, hij);
+      const Vec<D> dv = v[i] - v[j];
+      const double vr = dot(dv, dx);
+      double pi_ij = 0.0;
+      if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
+        const double mu = hij * vr / (r2 + 0.01 * hij * hij);
+        const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+        pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+        mu_max = std::max(mu_max, -mu);
+      }
+      SymTensor pair = p_.stress_term[i] + p_.stress_term[j];
+      if (tensile) {
+        const double dp = hij / factor;  // current particle spacing
+        const double f = kernel_.value(r, hij) / kernel_.value(dp, hij);
+        pair += (p_.tensile_term[i] + p_.tensile_term[j]) * std::pow(f, power);
+      }
+      acc += (contract_vector<D>(pair, grad) - grad * pi_ij) * m[j];
+      heat += 0.5 * m[j] * pi_ij * dot(dv, grad);
+    }
+    if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
+      acc[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
+    p_.acceleration[i] = acc;
+    p_.heating[i] = heat;
+    p_.compression_rate[i] = mu_max;
+    p_.neighbour_count[i] = count;
+  }
+}
+
+template <int D>
+void SphSystem<D>::advance(double dt) {
+  const std::size_t n = p_.real;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) p_.velocity[i] += p_.acceleration[i] * dt;
+  std::vector<Vec<D>> shift(n);
+  if (options_.xsph > 0.0) {
+    // XSPH (Monaghan 1989): move with the velocity smoothed over neighbours.
+    prepare_neighbours();
+    const auto& x = p_.position;
+    const auto& v = p_.velocity;
+#pragma omp parallel for schedule(dynamic, 128)
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec<D> s{};
+      for (const std::uint32_t j : search_.neighbours(i)) {
+        const Vec<D> dx = x[i] - x[j];
+        const double hij = pair_smoothing_length(p_.smoothing_length[i], p_.smoothing_length[j]);
+        const double w = kernel_.value(std::sqrt(dot(dx, dx)), hij);
+        if (w == 0.0) continue;
+        s += (v[j] - v[i]) *
+             (options_.xsph * p_.mass[j] * w / (0.5 * (p_.planar_density[i] + p_.planar_density[j])));
+      }
+      shift[i] = s;
+    }
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec<D> dx = (p_.velocity[i] + shift[i]) * dt;
+    p_.position[i] += dx;
+    p_.displacement[i] += dx;
+  }
+  if (mode_ == GeometryMode::axisymmetric)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(p_.position[i][0] > 0.0))
+        throw NumericalError(EntityKind::particle, static_cast<std::int64_t>(i + 1), "radius",
+                             fmt::format("particle crossed the axis (r = {:.6g} m)", p_.position[i][0]));
+}
+
+template <int D>
+void SphSystem<D>::update_state(double dt, double time) {
+  const std::size_t n = p_.real;
+  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
+  prepare_neighbours();
+  const auto& x = p_.position;
+  const auto& v = p_.velocity;
+  const auto& m = p_.mass;
+  const auto& eta = p_.planar_density;
+  const auto& h = p_.smoothing_length;
+  std::vector<double> eta_new(n), h_new(n);
+
+#pragma omp parallel for schedule(dynamic, 128)
+  for (std::size_t i = 0; i < n; ++i) {
+    double eta_rate = 0.0;
+    double grad_v[D][D] = {}, moment[D][D] = {}, grad_v_corr[D][D] = {};
+    for (const std::uint32_t j : search_.neighbours(i)) {
+      const Vec<D> dx = x[i] - x[j];
+      const double r2 = dot(dx, dx);
+      const double hij = pair_smoothing_length(h[i], h[j]);
+      if (r2 >= support_factor * support_factor * hij * hij) continue;
+      const Vec<D> grad = dx * kernel_.gradient_factor(std::sqrt(r2), hij);
+      const Vec<D> dv = v[i] - v[j];
+      eta_rate += m[j] * dot(dv, grad);
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) grad_v[a][b] -= m[j] * dv[a] * grad[b];
+      if (options_.kernel_correction) {
+        const double vol = m[j] / eta[j];
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) {
+            grad_v_corr[a][b] -= vol * dv[a] * grad[b];
+            moment[a][b] -= vol * dx[a] * grad[b];
+          }
+      }
+    }
+    // L = -(1/eta_i) sum m_j v_ij (x) grad W: the velocity gradient whose work
+    // matches the momentum sum (energy-consistent); with the correction,
+    // L = G M^-1 so that a linear field is differentiated exactly.
+    double inv[D][D];
+    const bool corrected = options_.kernel_correction && invert<D>(moment, inv);
+    double L[3][3] = {};
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) {
+        if (corrected) {
+          for (int c = 0; c < D; ++c) L[a][b] += grad_v_corr[a][c] * inv[c][b];
+        } else {
+          L[a][b] = grad_v[a][b] / eta[i];
+        }
+      }
+    if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
+    SymTensor d{L[0][0],
+                L[1][1],
+                L[2][2],
+                0.5 * (L[0][1] + L[1][0]),
+                0.5 * (L[1][2] + L[2][1]),
+                0.5 * (L[2][0] + L[0][2])};
+    p_.strain_rate[i] = d;
+    p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
+    // Continuity, integrated as d ln(eta) so that eta stays positive.
+    eta_new[i] = eta[i] * std::exp(dt * eta_rate / eta[i]);
+    double hi = h[i];
+    if (options_.variable_smoothing_length) {
+      const double h0 = p_.reference_smoothing_length[i];
+      hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
+      hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
+    }
+    h_new[i] = hi;
+  }
+
+  for (std::size_t i = 0; i < n; ++i) {
+    p_.planar_density[i] = eta_new[i];
+    p_.smoothing_length[i] = h_new[i];
+  }
+
+  // The shared constitutive update, one batch per material.
+  const MaterialContext ctx{dt, time};
+  for (std::size_t mat = 0; mat < batches_.size(); ++mat) {
+    auto& pts = batches_[mat];
+    const auto& members = batch_particles_[mat];
+    if (members.empty()) continue;
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      const std::size_t i = members[k];
+      const double rho = p_.planar_density[i] / geometric_weight(x[i]);
+      pts.density_previous[k] = p_.density[i];
+      pts.density[k] = rho;
+      pts.strain_rate[k] = p_.strain_rate[i];
+      pts.spin[k] = p_.spin[i];
+      pts.artificial_viscosity[k] = 0.0;  // SPH viscosity is pairwise: its heating is added below
+      pts.characteristic_length[k] = p_.smoothing_length[i];
+      pts.specific_energy[k] += dt * p_.heating[i];
+      p_.density[i] = rho;
+    }
+    materials_[mat]->update(pts, ctx);
+  }
+  gather_material_state();
+}
+
+// The class itself is instantiated in sph_system.cpp; these are its members defined here.
+template void SphSystem<2>::compute_accelerations();
+template void SphSystem<3>::compute_accelerations();
+template void SphSystem<2>::advance(double);
+template void SphSystem<3>::advance(double);
+template void SphSystem<2>::update_state(double, double);
+template void SphSystem<3>::update_state(double, double);
+
+}  // namespace camouflet::sph

@@ -1,0 +1,250 @@
+// Set-up, bookkeeping and reporting of the SPH package; the particle sums are
+// in sph_sums.cpp.
+#include "sph/sph_system.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace camouflet::sph {
+
+template <int D>
+double SphSystem<D>::geometric_weight(const Vec<D>& x) const {
+  if (mode_ == GeometryMode::axisymmetric) return 2.0 * std::numbers::pi * std::abs(x[0]);
+  return 1.0;
+}
+
+template <int D>
+SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vector<MirrorPlane> planes)
+    : mode_(model.run.mode), options_(options), planes_(std::move(planes)) {
+  if (dimension_of(mode_) != D) throw std::invalid_argument("SphSystem: model dimension does not match");
+  if (model.particles.coordinates.size() != D * model.particles.count())
+    throw std::invalid_argument("SphSystem: particle coordinates do not match the dimension");
+  kernel_.kind = options_.kernel;
+  // The axis of revolution r = 0 reflects particles (mirror_boundary.hpp).
+  if (mode_ == GeometryMode::axisymmetric)
+    planes_.insert(planes_.begin(), MirrorPlane{0, 0.0, PlaneKind::symmetry});
+
+  const auto& src = model.particles;
+  const std::size_t n = src.count();
+  p_.real = n;
+  p_.position.resize(n);
+  p_.velocity.resize(n);
+  p_.mass.resize(n);
+  p_.planar_density.resize(n);
+  p_.smoothing_length.resize(n);
+  p_.stress_term.resize(n);
+  p_.tensile_term.resize(n);
+  p_.wave_speed.resize(n);
+  p_.acceleration.assign(n, Vec<D>{});
+  p_.displacement.assign(n, Vec<D>{});
+  p_.density.resize(n);
+  p_.reference_smoothing_length.resize(n);
+  p_.reference_planar_density.resize(n);
+  p_.spacing.resize(n);
+  p_.stress.resize(n);
+  p_.pressure.resize(n);
+  p_.plastic_strain.resize(n);
+  p_.damage.resize(n);
+  p_.material.resize(n);
+  p_.part.resize(n);
+  p_.slot.resize(n);
+  p_.heating.assign(n, 0.0);
+  p_.compression_rate.assign(n, 0.0);
+  p_.neighbour_count.assign(n, 0);
+  p_.strain_rate.resize(n);
+  p_.spin.resize(n);
+
+  materials_.resize(model.materials.size());
+  batches_.resize(model.materials.size());
+  batch_particles_.resize(model.materials.size());
+  for (std::size_t m = 0; m < model.materials.size(); ++m) materials_[m] = model.materials[m].material;
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const int part = src.particle_part[i];
+    if (part < 0 || static_cast<std::size_t>(part) >= model.parts.size())
+      throw std::invalid_argument(
+          fmt::format("particle {} refers to part {} that does not exist", i + 1, part));
+    const int mat = model.parts[part].material;
+    if (mat < 0 || static_cast<std::size_t>(mat) >= model.materials.size() || !materials_[mat])
+      throw InputError(model.parts[part].where, "part '" + model.parts[part].name + "' has no material");
+    p_.part[i] = part;
+    p_.material[i] = mat;
+    p_.slot[i] = static_cast<std::uint32_t>(batch_particles_[mat].size());
+    batch_particles_[mat].push_back(static_cast<std::uint32_t>(i));
+    for (int d = 0; d < D; ++d) {
+      p_.position[i][d] = src.coordinates[D * i + d];
+      p_.velocity[i][d] = model.parts[part].initial_velocity[d];
+    }
+  }
+
+  for (std::size_t m = 0; m < materials_.size(); ++m) {
+    if (batch_particles_[m].empty()) continue;
+    materials_[m]->setup(batches_[m], batch_particles_[m].size());
+    std::vector<std::array<double, 3>> where(batch_particles_[m].size());
+    for (std::size_t k = 0; k < where.size(); ++k)
+      for (int d = 0; d < D; ++d) where[k][d] = p_.position[batch_particles_[m][k]][d];
+    materials_[m]->eos().place(batches_[m], where, model.detonations);
+  }
+
+  double h_min = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& pts = batches_[p_.material[i]];
+    const double rho = pts.density[p_.slot[i]];
+    p_.density[i] = rho;
+    p_.mass[i] = rho * src.volume[i];
+    p_.planar_density[i] = geometric_weight(p_.position[i]) * rho;
+    p_.reference_planar_density[i] = p_.planar_density[i];
+    p_.spacing[i] = src.spacing[i];
+    p_.smoothing_length[i] = options_.smoothing_factor * src.spacing[i];
+    p_.reference_smoothing_length[i] = p_.smoothing_length[i];
+    h_min = std::min(h_min, p_.smoothing_length[i]);
+  }
+  skin_ = n ? options_.skin_factor * h_min : 0.0;
+  gather_material_state();
+}
+
+template <int D>
+void SphSystem<D>::gather_material_state() {
+  const std::size_t n = p_.real;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& pts = batches_[p_.material[i]];
+    const std::size_t k = p_.slot[i];
+    const double p = pts.pressure[k];
+    SymTensor sigma = pts.deviator[k];
+    sigma.xx -= p;
+    sigma.yy -= p;
+    sigma.zz -= p;
+    p_.stress[i] = sigma;
+    p_.pressure[i] = p;
+    p_.wave_speed[i] = pts.wave_speed(k);
+    p_.plastic_strain[i] = pts.plastic_strain[k];
+    p_.damage[i] = pts.damage[k];
+    const double eta = p_.planar_density[i];
+    p_.stress_term[i] = sigma * (geometric_weight(p_.position[i]) / (eta * eta));
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(p_.pressure[i]) ||
+        !std::isfinite(p_.stress[i].xx + p_.stress[i].yy + p_.stress[i].xy) ||
+        !std::isfinite(p_.wave_speed[i]))
+      throw NumericalError(
+          EntityKind::particle, static_cast<std::int64_t>(i + 1), "stress",
+          fmt::format("non-finite stress or sound speed (density {:.6g} kg/m^3)", p_.density[i]));
+}
+
+template <int D>
+void SphSystem<D>::refresh_ghosts() {
+  const std::size_t n = p_.real;
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+    const std::size_t k = n + g, s = ghosts_[g].source;
+    const MirrorPlane& plane = planes_[ghosts_[g].plane];
+    p_.position[k] = mirror_position(p_.position[s], plane);
+    p_.velocity[k] = mirror_velocity(p_.velocity[s], plane);
+    p_.mass[k] = p_.mass[s];
+    p_.planar_density[k] = p_.planar_density[s];
+    p_.smoothing_length[k] = p_.smoothing_length[s];
+    p_.wave_speed[k] = p_.wave_speed[s];
+    p_.stress_term[k] = mirror_tensor(p_.stress_term[s], plane.axis);
+    p_.tensile_term[k] = mirror_tensor(p_.tensile_term[s], plane.axis);
+  }
+}
+
+template <int D>
+void SphSystem<D>::prepare_neighbours() {
+  const std::size_t n = p_.real;
+  refresh_ghosts();
+  if (!search_.needs_rebuild(p_.position, p_.smoothing_length)) return;
+  double h_max = 0.0;
+  for (std::size_t i = 0; i < n; ++i) h_max = std::max(h_max, p_.smoothing_length[i]);
+  ghost_reach_ = support_factor * h_max + skin_;
+  ghosts_ = make_ghosts(p_.position, n, planes_, ghost_reach_);
+  const std::size_t total = p_.position.size();
+  p_.velocity.resize(total);
+  p_.mass.resize(total);
+  p_.planar_density.resize(total);
+  p_.smoothing_length.resize(total);
+  p_.stress_term.resize(total);
+  p_.tensile_term.resize(total);
+  p_.wave_speed.resize(total);
+  refresh_ghosts();
+  search_.build(p_.position, p_.smoothing_length, n, skin_);
+}
+
+template <int D>
+void SphSystem<D>::step(double dt, double time_end_of_step) {
+  advance(dt);
+  update_state(dt, time_end_of_step);
+  compute_accelerations();
+}
+
+template <int D>
+TimeStepLimit SphSystem<D>::stable_time_step() const {
+  TimeStepLimit best{std::numeric_limits<double>::infinity(), "no particles"};
+  std::size_t which = 0;
+  for (std::size_t i = 0; i < p_.real; ++i) {
+    const double c = p_.wave_speed[i];
+    const double speed =
+        c + norm(p_.velocity[i]) +
+        0.6 * (options_.viscosity_alpha * c + options_.viscosity_beta * p_.compression_rate[i]);
+    const double dt = speed > 0.0 ? p_.smoothing_length[i] / speed : std::numeric_limits<double>::infinity();
+    if (dt < best.dt) best.dt = dt, which = i;
+  }
+  if (p_.real && std::isfinite(best.dt))
+    best.reason = fmt::format("particle {} ({}): h/(c+|v|+viscosity)", which + 1,
+                              materials_[p_.material[which]]->name());
+  return best;
+}
+
+template <int D>
+double SphSystem<D>::kinetic_energy() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.real; ++i) e += 0.5 * p_.mass[i] * dot(p_.velocity[i], p_.velocity[i]);
+  return e;
+}
+
+template <int D>
+double SphSystem<D>::internal_energy() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.real; ++i)
+    e += p_.mass[i] * batches_[p_.material[i]].specific_energy[p_.slot[i]];
+  return e;
+}
+
+template <int D>
+Vec<D> SphSystem<D>::momentum() const {
+  Vec<D> m{};
+  for (std::size_t i = 0; i < p_.real; ++i) m += p_.velocity[i] * p_.mass[i];
+  return m;
+}
+
+template <int D>
+void SphSystem<D>::fill_snapshot(FieldSnapshot& s) const {
+  static_assert(sizeof(Vec<D>) == D * sizeof(double), "Vec<D> must be D packed doubles");
+  const std::size_t n = p_.real;
+  auto flat = [n](const std::vector<Vec<D>>& v) {
+    return std::span<const double>(reinterpret_cast<const double*>(v.data()), D * n);
+  };
+  s.particle_position = flat(p_.position);
+  s.particle_displacement = flat(p_.displacement);
+  s.particle_velocity = flat(p_.velocity);
+  s.particle_acceleration = flat(p_.acceleration);
+  s.particle_density = p_.density;
+  s.particle_pressure = p_.pressure;
+  s.particle_stress = p_.stress;
+  s.particle_plastic_strain = p_.plastic_strain;
+  s.particle_damage = p_.damage;
+  s.particle_material = p_.material;
+  s.particle_smoothing_length = std::span<const double>(p_.smoothing_length.data(), n);
+  s.particle_neighbour_count = p_.neighbour_count;
+}
+
+template class SphSystem<2>;
+template class SphSystem<3>;
+
+}  // namespace camouflet::sph

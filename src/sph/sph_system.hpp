@@ -1,0 +1,137 @@
+#pragma once
+// The SPH package: particles, their material batches and the stages of the
+// explicit cycle (architecture.md) that the solver calls for particles.
+//
+// Formulation (Monaghan 1992, 2005; Libersky & Petschek 1991/1993 for strength),
+// written in "planar" form so that plane strain, axisymmetry and 3-D share one
+// set of sums. Each particle carries its mass m (axisymmetric: the mass of the
+// ring), its planar density eta = w rho with w = 2 pi r in r-z and w = 1
+// otherwise, and the stress sigma from the shared material update.
+//
+//   continuity   d eta_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij
+//   vel. grad.   L_i = -(1/eta_i) sum_j m_j (v_i - v_j) (x) grad_i W_ij  [+ hoop L_tt = v_r / r]
+//   momentum     dv_i/dt = sum_j m_j (T_i + T_j - Pi_ij I + f_ij^n (R_i + R_j)) . grad_i W_ij
+//                          [- sigma_tt,i / (rho_i r_i) e_r]                  T = w sigma / eta^2
+//   energy       Material::update from D and the density change (p dv is then
+//                exactly the work of the pressure part of the momentum sum),
+//                plus the viscous heating 1/2 sum_j m_j Pi_ij (v_i - v_j) . grad_i W_ij.
+//
+// In r-z this is the axisymmetric SPH of Brookshaw (2003, ANZIAM J. 44 C114)
+// and Garcia-Senz, Relano, Cabezon & Bravo (2009, MNRAS 392, 346; "AxisSPH",
+// Relano 2012): the 2-D kernel sums act on eta = 2 pi r rho, and the hoop
+// terms come from writing the r-z divergence of the stress as
+// div(r sigma) - sigma_tt e_r. The axis is a mirror plane (mirror_boundary.hpp).
+//
+// Stages of one cycle (the solver, or step() for pure-SPH runs, calls them in order):
+//   compute_accelerations()  forces at x(n) with sigma(n)       -> a(n)
+//   advance(dt)              v(n+1/2) = v(n-1/2) + a dt; x(n+1) = x(n) + v dt
+//   update_state(dt, t)      eta, rho, L, h at x(n+1); Material::update -> sigma(n+1)
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/sym_tensor.hpp"
+#include "core/vec.hpp"
+#include "materials/material.hpp"
+#include "model/model.hpp"
+#include "output/snapshot.hpp"
+#include "solver/run.hpp"
+#include "sph/kernel.hpp"
+#include "sph/mirror_boundary.hpp"
+#include "sph/neighbour_search.hpp"
+#include "sph/sph_options.hpp"
+
+namespace camouflet::sph {
+
+// Structure of arrays over particles (real ones first; the first `real` entries
+// of the point arrays are particles, the rest ghosts).
+template <int D>
+struct ParticleArrays {
+  std::size_t real = 0;
+  // --- points (particles, then ghosts) ---
+  std::vector<Vec<D>> position;          // m
+  std::vector<Vec<D>> velocity;          // m/s, v(n-1/2) before advance(), v(n+1/2) after
+  std::vector<double> mass;              // kg (axisymmetric: ring mass)
+  std::vector<double> planar_density;    // eta = w rho: kg/m^3 (3-D, plane), kg/m^2 per radian x 2 pi (r-z)
+  std::vector<double> smoothing_length;  // m
+  std::vector<SymTensor> stress_term;    // T = w sigma / eta^2 (= sigma / rho^2 off-axis)
+  std::vector<SymTensor> tensile_term;   // artificial stress R, same scaling as T
+  std::vector<double> wave_speed;        // m/s, sqrt(c^2 + 4G/3rho)
+  // --- particles only ---
+  std::vector<Vec<D>> acceleration;                // m/s^2
+  std::vector<Vec<D>> displacement;                // m, from the initial position
+  std::vector<double> density;                     // kg/m^3
+  std::vector<double> reference_smoothing_length;  // m, h0 = factor x spacing
+  std::vector<double> reference_planar_density;
+  std::vector<double> spacing;    // m, initial particle spacing (for the artificial-stress dp)
+  std::vector<SymTensor> stress;  // Pa, sigma = s - p I (tension positive)
+  std::vector<double> pressure;   // Pa
+  std::vector<double> plastic_strain;
+  std::vector<double> damage;
+  std::vector<int> material;             // index into Model::materials
+  std::vector<int> part;                 // index into Model::parts
+  std::vector<std::uint32_t> slot;       // index in the material's batch
+  std::vector<double> heating;           // J/(kg s), artificial-viscosity heating rate
+  std::vector<double> compression_rate;  // 1/s, largest mu_ij (viscous time-step term)
+  std::vector<int> neighbour_count;
+  std::vector<SymTensor> strain_rate;  // 1/s
+  std::vector<Spin> spin;              // 1/s
+};
+
+template <int D>
+class SphSystem {
+ public:
+  // Particles from model.particles (their parts give material and initial
+  // velocity; mass = reference density x volume), mirror planes from the caller
+  // (the axis r = 0 is added automatically in axisymmetric mode).
+  SphSystem(const Model& model, const SphOptions& options, std::vector<MirrorPlane> planes = {});
+
+  std::size_t size() const { return p_.real; }
+  ParticleArrays<D>& particles() { return p_; }
+  const ParticleArrays<D>& particles() const { return p_; }
+  GeometryMode mode() const { return mode_; }
+  const SphOptions& options() const { return options_; }
+
+  // --- stages of the cycle ---
+  void compute_accelerations();
+  void advance(double dt);
+  void update_state(double dt, double time);
+  // One whole cycle for pure-SPH runs and tests: advance, update_state, compute_accelerations.
+  // Call compute_accelerations() once before the first step.
+  void step(double dt, double time_end_of_step);
+
+  // Stable time step h / (c + |v| + 1.2 (alpha c + beta mu_max)) (Monaghan 1992,
+  // section 10), the smallest over particles, without the CFL factor; the reason names the particle.
+  TimeStepLimit stable_time_step() const;
+
+  double kinetic_energy() const;   // J (axisymmetric: full revolution)
+  double internal_energy() const;  // J
+  Vec<D> momentum() const;         // kg m/s
+
+  // Particle fields of a FieldSnapshot (spans into this object).
+  void fill_snapshot(FieldSnapshot& snapshot) const;
+  const NeighbourSearch<D>& neighbours() const { return search_; }
+
+ private:
+  void prepare_neighbours();
+  void refresh_ghosts();
+  void gather_material_state();
+  double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
+
+  GeometryMode mode_;
+  SphOptions options_;
+  Kernel<D> kernel_;
+  std::vector<MirrorPlane> planes_;
+  std::vector<Ghost> ghosts_;
+  NeighbourSearch<D> search_;
+  double skin_ = 0.0;
+  double ghost_reach_ = 0.0;
+  ParticleArrays<D> p_;
+  std::vector<std::shared_ptr<const Material>> materials_;   // by Model::materials index
+  std::vector<MaterialPoints> batches_;                      // by Model::materials index
+  std::vector<std::vector<std::uint32_t>> batch_particles_;  // particle of each slot
+};
+
+}  // namespace camouflet::sph

@@ -1,6 +1,7 @@
 #include "output/progress.hpp"
 
 #include <fmt/format.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -13,6 +14,19 @@ namespace {
 // A terminal line is redrawn at most this often (s): drawing every cycle of a
 // fast run would cost more than the cycle itself.
 constexpr double terminal_refresh_s = 0.1;
+// Columns of the terminal behind `stream` (0 when unknown). A line longer than
+// the terminal wraps, and '\r' then rewrites only its last row: the line is
+// cut to fit instead.
+std::size_t terminal_columns(std::FILE* stream) {
+  winsize ws{};
+  if (ioctl(fileno(stream), TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0) return ws.ws_col;
+  return 0;
+}
+
+std::string fit(std::string line, std::size_t columns) {
+  if (columns > 1 && line.size() > columns - 1) line.resize(columns - 1);
+  return line;
+}
 }  // namespace
 
 std::string format_duration(double seconds) {
@@ -41,11 +55,12 @@ std::string ProgressReporter::format_line(double time, double end_time, std::int
   else if (time >= end_time)
     remaining = format_duration(0.0);
   const double percent = end_time > 0.0 ? 100.0 * time / end_time : 0.0;
+  // Most useful first: a narrow terminal cuts the end of the line.
   return fmt::format(
-      "t = {:.4e} s ({:5.1f}%)  cycle {}  dt = {:.3e} s [{}]  energy error {:.2e}  elapsed {}  "
-      "remaining {}",
-      time, percent, cycle, dt, dt_reason.empty() ? "-" : dt_reason, energy_error,
-      format_duration(wall_seconds), remaining);
+      "t = {:.4e} s ({:.1f}%)  cycle {}  elapsed {}  remaining {}  energy error {:.2e}  dt = {:.3e} s "
+      "[{}]",
+      time, percent, cycle, format_duration(wall_seconds), remaining, energy_error, dt,
+      dt_reason.empty() ? "-" : dt_reason);
 }
 
 void ProgressReporter::update(double time, std::int64_t cycle, double dt, const std::string& dt_reason,
@@ -55,10 +70,12 @@ void ProgressReporter::update(double time, std::int64_t cycle, double dt, const 
   if (style_ == ProgressStyle::terminal) {
     if (!first && wall_seconds - last_terminal_wall_ < terminal_refresh_s) {
       pending_ = true;
-      last_line_ = format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds);
+      last_line_ = fit(format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds),
+                       terminal_columns(stream_));
       return;
     }
-    last_line_ = format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds);
+    last_line_ = fit(format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds),
+                     terminal_columns(stream_));
     // Pad with spaces so a shorter line fully covers the previous one.
     const std::size_t pad = last_width_ > last_line_.size() ? last_width_ - last_line_.size() : 0;
     fmt::print(stream_, "\r{}{}", last_line_, std::string(pad, ' '));

@@ -86,3 +86,38 @@ TEST(EndToEnd, CheckPrintsSummaryAndExitsZero) {
 
 }  // namespace
 }  // namespace camouflet
+
+namespace camouflet {
+namespace {
+
+// Exit code 1: a run stopped by a numerical check (here the energy-balance
+// limit, set absurdly tight) still leaves its summary, marked failed.
+TEST(EndToEnd, NumericalFailureExitsOne) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output";
+  fs::create_directories(dir);
+  std::string text = slurp(fs::path(CAMOUFLET_SOURCE_DIR) / "cases/examples/elastic_column.toml");
+  text.replace(text.find("cfl = 0.6"), 9, "cfl = 0.6\nenergy_error_limit = 1e-300");
+  const fs::path case_file = dir / "energy_limit.toml";
+  std::ofstream(case_file) << text;
+  const fs::path out = dir / "energy_limit";
+  fs::remove_all(out);
+  const auto r =
+      test::run_camouflet("run --quiet --threads 1 '" + case_file.string() + "' -o '" + out.string() + "'");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_EQ(r.output.rfind("error: numerical failure: ", 0), 0u) << r.output;
+  EXPECT_NE(r.output.find("energy"), std::string::npos) << r.output;
+  EXPECT_NE(slurp(out / "summary.json").find("\"failed\": true"), std::string::npos);
+}
+
+// Exit code 3: an output folder that cannot be created.
+TEST(EndToEnd, UnwritableOutputExitsThree) {
+  const auto case_file = std::filesystem::path(CAMOUFLET_SOURCE_DIR) / "cases/examples/elastic_column.toml";
+  const auto r =
+      test::run_camouflet("run --quiet '" + case_file.string() + "' -o /proc/camouflet-no-such-dir/x");
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_EQ(r.output.rfind("error: I/O failure: ", 0), 0u) << r.output;
+}
+
+}  // namespace
+}  // namespace camouflet

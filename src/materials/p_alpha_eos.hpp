@@ -51,8 +51,7 @@ class PAlphaEos final : public EquationOfState {
   // NumericalError naming `point` if the bracketed solve fails.
   PAlphaState solve(double density, double specific_energy, double plastic_distension, long point = -1) const;
   // Bulk sound speed consistent with the branch of `state` (m/s).
-  double sound_speed(double density, double specific_energy, const PAlphaState& state,
-                     double alpha_p_before) const;
+  double sound_speed(double density, double specific_energy, const PAlphaState& state) const;
 
  private:
   double elastic_compliance(double plastic_distension) const;  // kappa, 1/Pa

@@ -35,7 +35,7 @@ std::string refused_key(const std::string& block, const std::string& key, double
 
 TEST(ConcreteRobustness, RandomStrainIncrementsNeverBreakTheUpdate) {
   const auto concrete = test::concrete_35mpa();
-  constexpr std::size_t points = 100, steps = 100;  // 10,000 increments
+  constexpr std::size_t points = 400, steps = 25;  // 10,000 increments; > 256 points: the threaded loops
   MaterialPoints pts;
   concrete->setup(pts, points);
   const std::size_t alpha_slot = pts.history.slot("plastic_distension");

@@ -91,6 +91,7 @@ FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::v
   length.assign(n, 0.0);
   speed.assign(n, 0.0);
   hourglass_displacement.assign(n * modes * D, 0.0);
+  eroded.assign(n, 0);
   for (std::size_t e = 0; e < n; ++e) {
     NodeValues<D> x, b;
     gather<D>(coordinates.data(), &connectivity[e * nodes], x);
@@ -134,6 +135,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
 #pragma omp parallel for schedule(static) reduction(+ : stored) if (count > parallel_threshold)
     for (std::int64_t k = 0; k < count; ++k) {
       const std::size_t e = static_cast<std::size_t>(colour[static_cast<std::size_t>(k)]);
+      if (eroded[e]) continue;
       const std::int64_t* conn = &connectivity[e * N];
       NodeValues<D> xe, b, fe;
       gather<D>(x, conn, xe);
@@ -217,6 +219,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
 #pragma omp parallel for schedule(static) reduction(min : bad) reduction(+ : viscous_work) if (n > parallel_threshold)
   for (std::int64_t k = 0; k < n; ++k) {
     const std::size_t e = static_cast<std::size_t>(k);
+    if (eroded[e]) continue;
     const std::int64_t* conn = &connectivity[e * N];
     NodeValues<D> xe, ve, xh, b;
     gather<D>(x, conn, xe);

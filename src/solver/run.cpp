@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "output/run_output.hpp"
+#include "solver/bar_output.hpp"
 #include "solver/solver.hpp"
 #if __has_include("output/progress.hpp")
 #include "output/progress.hpp"
@@ -26,6 +27,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   };
   Solver<D> solver(model);
   RunOutput output(model, options, solver.snapshot());
+  BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories (issue 6)
 #ifdef CAMOUFLET_HAS_PROGRESS
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
@@ -54,6 +56,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.limit_next_step(run.end_time - solver.time());
       solver.step();
       output.after_cycle(solver.snapshot());
+      bar_csv.after_cycle(solver.time(), solver.bars());
       const EnergyBalance& energy = solver.energy();
 #ifdef CAMOUFLET_HAS_PROGRESS
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,

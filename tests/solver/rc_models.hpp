@@ -39,11 +39,10 @@ inline BoundaryCondition ramped_velocity(const std::string& set, int component, 
   return bc;
 }
 
-// Axial force (N; per metre of depth in plane strain) carried by element e:
-// sigma_xx times its current cross-section V / L_x, L_x the mean distance
-// between its x-min and x-max faces.
+// Current cross-section (m^2; m^2/m in plane strain) of element e normal to
+// x: V / L_x, L_x the mean distance between its x-min and x-max faces.
 template <int D>
-double element_axial_force(const Solver<D>& solver, std::size_t e) {
+double element_cross_section(const Solver<D>& solver, std::size_t e) {
   constexpr int N = FemElements<D>::nodes;
   // Node order of the block generator: xmin corners 0, 3 (+4, 7), xmax 1, 2 (+5, 6).
   static constexpr int lo[4] = {0, 3, 4, 7}, hi[4] = {1, 2, 5, 6};
@@ -55,7 +54,13 @@ double element_axial_force(const Solver<D>& solver, std::size_t e) {
     x_hi += x[static_cast<std::size_t>(conn[e * N + static_cast<std::size_t>(hi[k])] * D)];
   }
   const double length = (x_hi - x_lo) / (N / 2);
-  return solver.elements().stress[e].xx * solver.elements().volume[e] / length;
+  return solver.elements().volume[e] / length;
+}
+
+// Axial force (N; per metre of depth in plane strain) carried by element e.
+template <int D>
+double element_axial_force(const Solver<D>& solver, std::size_t e) {
+  return solver.elements().stress[e].xx * element_cross_section(solver, e);
 }
 
 }  // namespace camouflet::test

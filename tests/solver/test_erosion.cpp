@@ -73,7 +73,8 @@ ErosionResult pull_to_erosion() {
       double f[2][2] = {};
       for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j)
-          for (int a = 0; a < 4; ++a) f[i][j] += solver.position()[static_cast<std::size_t>(c[a] * 2 + i)] * b[j][a];
+          for (int a = 0; a < 4; ++a)
+            f[i][j] += solver.position()[static_cast<std::size_t>(c[a] * 2 + i)] * b[j][a];
       const double c11 = f[0][0] * f[0][0] + f[1][0] * f[1][0], c22 = f[0][1] * f[0][1] + f[1][1] * f[1][1];
       const double c12 = f[0][0] * f[0][1] + f[1][0] * f[1][1];
       const double mean = 0.5 * (c11 + c22), radius = std::sqrt(0.25 * (c11 - c22) * (c11 - c22) + c12 * c12);
@@ -113,7 +114,8 @@ TEST(Erosion, GeometricStrainErodesTheNeckAndKeepsTheEnergyBalanceClosed) {
   const ErosionResult r = pull_to_erosion();
   EXPECT_EQ(r.eroded, 2u) << "only the seed's two elements reach the threshold";
   test::verify({"Erosion by geometric strain: strain of the eroded element",
-                "threshold 0.15 (Hencky strain of the element, sqrt(2/3 eps:eps))", threshold, r.strain_at_erosion, 0.05, true, "-"});
+                "threshold 0.15 (Hencky strain of the element, sqrt(2/3 eps:eps))", threshold,
+                r.strain_at_erosion, 0.05, true, "-"});
   EXPECT_EQ(r.seed_stress_after, 0.0);
   EXPECT_NEAR(r.mass_change, 0.0, 1e-14) << "eroded mass stays on the nodes";
   // The eroded energy must matter, or the closed balance proves nothing.

@@ -83,3 +83,5 @@ TEST(ReinforcementKeys, BadValuesNameTheirKey) {
   zero_area.replace(zero_area.find("area = 5e-4"), 11, "area = 0.0");
   expect_error(zero_area, "area");
 }
+
+}  // namespace camouflet

@@ -202,6 +202,8 @@ void check(const TieResult& r, const std::string& name) {
   test::verify({"RC tie in tension, " + name + ": force at the crack after the concrete failed",
                 "steel area x Johnson-Cook flow stress (Steel 1006, Wang et al. 2005 Table 4)",
                 r.steel_expected, r.section_force, 0.03, true, "N"});
+  test::verify({"RC tie in tension, " + name + ": energy balance (with eroded concrete)",
+                "closed (relative error)", 0.0, r.energy_error, 0.01, false, "-"});
 }
 
 }  // namespace

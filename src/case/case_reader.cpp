@@ -25,6 +25,7 @@ Model build(const toml::table& doc, const std::filesystem::path& file) {
   if (auto output = root.table("output")) case_detail::read_output(*output, model);
   if (auto materials = root.table("materials")) case_detail::read_materials(*materials, model);
   case_detail::read_parts(root, model, file.parent_path());
+  case_detail::read_bars(root, model);
   case_detail::read_boundaries(root, model);
   case_detail::read_gauges(root, model);
   case_detail::read_detonations(root, model);

@@ -33,6 +33,7 @@ void read_materials(TomlReader& materials, Model& model) {
     Parameters eos = block_parameters(*material, "eos");
     Parameters strength = block_parameters(*material, "strength");
     Parameters damage = block_parameters(*material, "damage");
+    const ErosionCriteria erosion = read_erosion(*material);
     material->finish();
     if (preset.empty() && eos.keys().empty())
       throw InputError(material->where("eos"),
@@ -42,6 +43,8 @@ void read_materials(TomlReader& materials, Model& model) {
     auto built =
         make_material(name, preset, preset_where, std::move(eos), std::move(strength), std::move(damage));
     model.materials.push_back({name, std::move(built), material->where()});
+    model.erosion.resize(model.materials.size());
+    model.erosion.back() = erosion;
   }
 }
 

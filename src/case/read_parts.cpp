@@ -27,7 +27,9 @@ int find_material(const Model& model, TomlReader& part, const std::string& name)
                 : fmt::format("no material '{}' is defined; did you mean '{}'?", name, guess));
 }
 
-void read_block(TomlReader& block, Model& model, const std::string& name, int part_index) {
+// Reads the block and meshes it: a plain block, or a wall with its steel
+// layers when the part has `rebar_layers` (case/read_reinforcement.cpp).
+void read_block(TomlReader& block, Model& model, const std::string& name, int part_index, TomlReader& part) {
   const int dim = model.dimension();
   BlockSpec spec;
   spec.name = name;
@@ -57,6 +59,7 @@ void read_block(TomlReader& block, Model& model, const std::string& name, int pa
     if (!(spec.grading[static_cast<std::size_t>(i)] > 0.0))
       block.fail("grading", "every ratio must be positive");
   block.finish();
+  if (part.has("rebar_layers")) return read_rebar_wall(part, spec, model);
   try {
     add_block(model.mesh, spec);
   } catch (const InputError& e) {
@@ -93,7 +96,7 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
              "a part needs exactly one mesh source: `block = {...}` or `gmsh = \"file.msh\"`");
     if (has_block) {
       auto block = p.table("block");
-      read_block(*block, model, part.name, index);
+      read_block(*block, model, part.name, index, p);
     } else {
       GmshPartRequest request;
       const std::filesystem::path file = p.string("gmsh");

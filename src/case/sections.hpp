@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "case/toml_reader.hpp"
+#include "mesh/block_generator.hpp"
 #include "model/model.hpp"
 
 namespace camouflet::case_detail {
@@ -15,6 +16,12 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
 void read_boundaries(TomlReader& root, Model& model);
 void read_gauges(TomlReader& root, Model& model);
 void read_detonations(TomlReader& root, Model& model);
+
+// Reinforced concrete (case/read_reinforcement.cpp): a block part with
+// `rebar_layers`, the [[bars]] section, a material's `erosion` table.
+void read_rebar_wall(TomlReader& part, const BlockSpec& block, Model& model);
+void read_bars(TomlReader& root, Model& model);
+ErosionCriteria read_erosion(TomlReader& material);
 
 // Densities, element shapes (corner Jacobians), gauges inside the mesh.
 void check_model(const Model& model);

@@ -91,6 +91,7 @@ FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::v
   length.assign(n, 0.0);
   speed.assign(n, 0.0);
   hourglass_displacement.assign(n * modes * D, 0.0);
+  eroded.assign(n, 0);
   for (std::size_t e = 0; e < n; ++e) {
     NodeValues<D> x, b;
     gather<D>(coordinates.data(), &connectivity[e * nodes], x);
@@ -133,6 +134,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
   // into fh_out); returns the stiffness-form hourglass energy it holds.
   const auto element = [&](std::size_t e, double* f_out, double* fh_out) {
     double stored = 0.0;
+    if (eroded[e]) return stored;  // an eroded element carries no force (issue 6)
     const std::int64_t* conn = &connectivity[e * N];
     NodeValues<D> xe, b, fe;
     gather<D>(x, conn, xe);
@@ -260,6 +262,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
 #pragma omp parallel for schedule(static) reduction(min : bad) reduction(+ : viscous_work) if (n > parallel_threshold)
   for (std::int64_t k = 0; k < n; ++k) {
     const std::size_t e = static_cast<std::size_t>(k);
+    if (eroded[e]) continue;
     const std::int64_t* conn = &connectivity[e * N];
     NodeValues<D> xe, ve, xh, b;
     gather<D>(x, conn, xe);

@@ -78,6 +78,7 @@ class FemElements {
   std::vector<double> length;                  // m, characteristic length for dt and q
   std::vector<double> speed;                   // m/s, largest node speed of the element
   std::vector<double> hourglass_displacement;  // m, e * modes * D: stiffness-form generalised modes
+  std::vector<char> eroded;                    // 1: eroded (no forces, no kinematics; issue 6)
 
  private:
   bool axisymmetric_ = false;

@@ -63,6 +63,12 @@ void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
         pts.specific_energy_start[i] - (p_avg + pts.artificial_viscosity[i]) * dv + half_dev_work;
   }
   eos_->evaluate(pts, ctx, true);
+  // The pressure the strength and damage models leave may differ from the
+  // EOS's (RHT caps the tensile pressure at the spall strength and scales it
+  // with damage). The p dv work must use the pressure that acts, or energy
+  // appears that no force supplied: keep the EOS value to correct for it below.
+  std::vector<double>& eos_pressure = pts.pressure_start;  // p_start is no longer needed
+  eos_pressure.assign(pts.pressure.begin(), pts.pressure.end());
 
   if (strength_) {
     strength_->update(pts, ctx);
@@ -76,6 +82,13 @@ void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
     for (std::size_t i = 0; i < n; ++i) pts.deviator[i] = SymTensor{};
   }
   if (damage_) damage_->update(pts, ctx);
+
+    // Trapezoidal p dv with the acting end pressure: e -= (p - p_eos) dv / 2.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dv = 1.0 / pts.density[i] - 1.0 / pts.density_previous[i];
+    pts.specific_energy[i] -= 0.5 * (pts.pressure[i] - eos_pressure[i]) * dv;
+  }
 }
 
 }  // namespace camouflet

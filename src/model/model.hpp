@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/parameters.hpp"
 #include "materials/material.hpp"
+#include "model/reinforcement.hpp"
 
 namespace camouflet {
 
@@ -143,6 +144,13 @@ struct Model {
   std::vector<GaugeGroup> gauges;
   std::vector<DetonationPoint> detonations;
   std::vector<SourceLocation> detonation_where;  // same order as detonations
+  std::vector<BarSet> bars;                      // embedded reinforcement bars (issue 6)
+  // Erosion of each material, by index into `materials` (issue 6); a
+  // material beyond the end of this list does not erode.
+  std::vector<ErosionCriteria> erosion;
+  ErosionCriteria erosion_of(std::size_t material) const {
+    return material < erosion.size() ? erosion[material] : ErosionCriteria{};
+  }
 
   int dimension() const { return dimension_of(run.mode); }
 };

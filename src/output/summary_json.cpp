@@ -85,10 +85,10 @@ std::string summary_json(const Model& model, const RunSummary& s,
                  json_string(s.last_limit.reason));
   fmt::format_to(out,
                  "  \"energy_J\": {{\n    \"kinetic\": {},\n    \"internal\": {},\n    \"hourglass\": {},\n"
-                 "    \"viscous\": {},\n    \"boundary_work\": {},\n    \"initial_total\": {},\n"
+                 "    \"viscous\": {},\n    \"eroded\": {},\n    \"boundary_work\": {},\n    \"initial_total\": {},\n"
                  "    \"relative_error\": {}\n  }},\n",
                  number(e.kinetic), number(e.internal), number(e.hourglass), number(e.viscous),
-                 number(e.boundary_work), number(e.initial_total), number(e.relative_error));
+                 number(e.eroded), number(e.boundary_work), number(e.initial_total), number(e.relative_error));
   b += "  \"gauges\": {";
   for (std::size_t gi = 0; gi < gauges.size(); ++gi) {
     const auto& g = gauges[gi];

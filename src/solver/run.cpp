@@ -9,6 +9,7 @@
 
 #include "output/progress.hpp"
 #include "output/run_output.hpp"
+#include "solver/bar_output.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -23,6 +24,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   };
   Solver<D> solver(model);
   RunOutput output(model, options, solver.snapshot());
+  BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories (issue 6)
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
   RunSummary summary;
@@ -49,6 +51,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.limit_next_step(run.end_time - solver.time());
       solver.step();
       output.after_cycle(solver.snapshot());
+      bar_csv.after_cycle(solver.time(), solver.bars());
       const EnergyBalance& energy = solver.energy();
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());

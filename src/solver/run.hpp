@@ -25,8 +25,9 @@ struct EnergyBalance {
   double hourglass = 0.0;
   double viscous = 0.0;         // dissipated by artificial viscosity (contained in internal)
   double boundary_work = 0.0;   // work done on the model by boundary forces and loads
+  double eroded = 0.0;          // internal energy held by elements when they were eroded (issue 6)
   double initial_total = 0.0;   // kinetic + internal at t = 0
-  // |E_kin + E_int + E_hg - E_0 - W_boundary| / max(E_0 + |W_boundary|, E_kin + E_int + E_hg)
+  // |E_kin + E_int + E_hg + E_eroded - E_0 - W_boundary| / max(E_0 + |W_boundary|, E_kin + E_int + E_hg + E_eroded)
   double relative_error = 0.0;
 };
 

@@ -41,8 +41,6 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     v->assign(nn * D, 0.0);
   node_mass_.assign(nn, 0.0);
 
-  if (model.particles.count() > 0)  // refuse rather than silently drop them
-    throw InputError(model.run.where, "SPH particles are not handled by this solver yet (SPH issue)");
   try {
     elements_ = FemElements<D>(mesh, mode_, position_);
   } catch (const InputError& e) {  // name the case file the mesh came from
@@ -94,6 +92,8 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     for (int i = 0; i < D; ++i)
       velocity_[n * D + static_cast<std::size_t>(i)] =
           node_mass_[n] > 0.0 ? momentum[n * D + static_cast<std::size_t>(i)] / node_mass_[n] : 0.0;
+
+  setup_reinforcement();  // embedded bars add their mass at their hosts' velocity
 
   hourglass_ = {model.run.hourglass, model.run.hourglass_coefficient};
   // The viscous form's work is charged from its nodal forces; the stiffness
@@ -164,12 +164,15 @@ template <int D>
 void Solver<D>::step() {
   try {
     add_forces();            // loads and element forces at t_n (SPH particle forces join here)
+    add_bar_forces();        // embedded reinforcement bars onto their host nodes
     advance_velocities();    // a = F / m, v(n+1/2) by the central difference
     constrain_velocities();  // fixed, prescribed, symmetry, axis at t_(n+1/2)
     account_energy();        // kinetic, internal, hourglass, boundary work at t_n
     advance_positions();     // x(n+1) = x(n) + v(n+1/2) dt
     element_kinematics();    // V, rho at t_(n+1); D, W, q at mid-step (SPH kinematics beside it)
     update_materials();      // EOS + strength + damage, one call per material batch
+    update_bars();           // embedded bars: uniaxial-stress material update
+    erode_elements();        // elements past their material's erosion threshold
     gather_element_state();  // sigma = s - p I, wave speeds, internal energy, dt vote
     choose_time_step();      // dt(n+3/2) = CFL min l / (c + |v|), growth limited
   } catch (NumericalError& error) {
@@ -267,7 +270,7 @@ void Solver<D>::account_energy() {
   e.internal = internal_energy_;
   hourglass_dissipated_ += hourglass_power * dt_minus;
   e.hourglass = hourglass_dissipated_ + hourglass_stored_;
-  const double total = e.kinetic + e.internal + e.hourglass;
+  const double total = e.kinetic + e.internal + e.hourglass + e.eroded;
   const double scale = std::max(e.initial_total + std::abs(e.boundary_work), std::abs(total));
   e.relative_error = scale > 0.0 ? std::abs(total - e.initial_total - e.boundary_work) / scale : 0.0;
 }
@@ -316,6 +319,10 @@ void Solver<D>::gather_element_state() {
 #pragma omp parallel for schedule(static) reduction(+ : internal) reduction(min : bad) if (ne > parallel_threshold)
   for (std::int64_t k = 0; k < ne; ++k) {
     const std::size_t e = static_cast<std::size_t>(k);
+    if (elements_.eroded[e]) {
+      elements_.stress[e] = SymTensor{};  // its energy went to EnergyBalance::eroded
+      continue;
+    }
     const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
     const std::size_t p = elements_.point[e];
     const double pressure = pts.pressure[p];
@@ -332,7 +339,7 @@ void Solver<D>::gather_element_state() {
       bad = std::min(bad, k);
   }
   if (particles_) internal += particles_->internal_energy();
-  internal_energy_ = internal;
+  internal_energy_ = internal + bars_.internal_energy();
   if (bad != std::numeric_limits<std::int64_t>::max()) {
     const std::size_t e = static_cast<std::size_t>(bad);
     const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
@@ -358,6 +365,7 @@ void Solver<D>::choose_time_step() {
 #pragma omp for schedule(static) nowait
     for (std::int64_t k = 0; k < ne; ++k) {
       const std::size_t e = static_cast<std::size_t>(k);
+      if (elements_.eroded[e]) continue;
       double t = elements_.length[e] / (elements_.wave_speed[e] + elements_.speed[e]);
       if (!(t >= 0.0)) t = -1.0;  // NaN: this element is reported as the collapse
       if (t < local) {
@@ -383,6 +391,14 @@ void Solver<D>::choose_time_step() {
     if (run.cfl * vote.dt < dt) {
       dt = run.cfl * vote.dt;
       reason = vote.reason;
+    }
+  }
+  if (!bars_.empty()) {
+    std::size_t s = 0;
+    const double t = bars_.stable_time_step(position_.data(), s);
+    if (run.cfl * t < dt || !(t >= 0.0)) {
+      dt = run.cfl * t;
+      reason = fmt::format("bar '{}' segment {}: L/c", bars_.set_name(s), s + 1);
     }
   }
   // Hold the step while the limit sits within 2 % above it: a step that

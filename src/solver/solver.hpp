@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "boundary/boundary_conditions.hpp"
+#include "fem/embedded_bars.hpp"
 #include "fem/fem_elements.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
@@ -56,6 +57,8 @@ class Solver {
   // The SPH particles of the model (null when it has none).
   sph::SphSystem<D>* particles() { return particles_.get(); }
   const sph::SphSystem<D>* particles() const { return particles_.get(); }
+  const EmbeddedBars<D>& bars() const { return bars_; }
+  std::size_t eroded_count() const { return eroded_count_; }
 
  private:
   // Stages of step(), in order.
@@ -68,6 +71,11 @@ class Solver {
   void update_materials();
   void gather_element_state();
   void choose_time_step();
+  // Reinforced-concrete stages (solver/reinforcement_stages.cpp, issue 6).
+  void setup_reinforcement();
+  void add_bar_forces();
+  void update_bars();
+  void erode_elements();
 
   [[noreturn]] void fail(NumericalError error) const;
   std::vector<sph::MirrorPlane> particle_planes() const;
@@ -100,6 +108,12 @@ class Solver {
   double internal_energy_ = 0.0;       // J, sum m e at t_n
   double hourglass_stored_ = 0.0;      // J, stiffness-form hourglass energy at t_n
   double hourglass_dissipated_ = 0.0;  // J, work absorbed by the viscous form
+
+  // Reinforcement and erosion (issue 6).
+  EmbeddedBars<D> bars_;
+  bool erosion_ = false;                   // some material erodes
+  std::vector<SymTensor> total_strain_;    // per element, sum D dt (geometric-strain erosion)
+  std::size_t eroded_count_ = 0;
 };
 
 extern template class Solver<2>;

@@ -1,0 +1,394 @@
+#include "fem/embedded_bars.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "model/isoparametric.hpp"
+
+namespace camouflet {
+
+namespace {
+
+constexpr double two_pi = 2.0 * std::numbers::pi;
+
+// The element of `host_part` (any part when -1) containing x, with its
+// natural coordinates; nothing when none does.
+std::optional<ElementLocation> find_host(const FemMesh& mesh, int host_part, const double* x) {
+  const int dim = mesh.dimension, npe = mesh.nodes_per_element;
+  const std::size_t ne = mesh.element_count();
+  std::vector<double> nodes(static_cast<std::size_t>(npe * dim));
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (host_part >= 0 && mesh.element_part[e] != host_part) continue;
+    gather_element(dim, mesh.coordinates, mesh.connectivity, static_cast<std::int64_t>(e), nodes.data());
+    bool inside_box = true;
+    for (int i = 0; i < dim && inside_box; ++i) {
+      double lo = std::numeric_limits<double>::max(), hi = -lo;
+      for (int a = 0; a < npe; ++a) {
+        lo = std::min(lo, nodes[static_cast<std::size_t>(a * dim + i)]);
+        hi = std::max(hi, nodes[static_cast<std::size_t>(a * dim + i)]);
+      }
+      const double tol = 1e-9 * (hi - lo);
+      inside_box = x[i] >= lo - tol && x[i] <= hi + tol;
+    }
+    if (!inside_box) continue;
+    const auto xi = inverse_map(dim, nodes, std::span<const double>(x, static_cast<std::size_t>(dim)));
+    if (!xi) continue;
+    bool inside = true;
+    for (int i = 0; i < dim; ++i)
+      inside = inside && std::abs((*xi)[static_cast<std::size_t>(i)]) <= 1.0 + 1e-8;
+    if (inside) return ElementLocation{static_cast<std::int64_t>(e), *xi};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+template <int D>
+EmbeddedBars<D>::EmbeddedBars(const Model& model, const std::vector<double>& x0)
+    : axisymmetric_(model.run.mode == GeometryMode::axisymmetric) {
+  const FemMesh& mesh = model.mesh;
+  for (const BarSet& spec : model.bars) {
+    const auto where_key = [&](const char* key) {
+      SourceLocation w = spec.where;
+      w.key = w.key.empty() ? key : w.key + "." + key;
+      return w;
+    };
+    if (spec.segments < 1)
+      throw InputError(where_key("segments"), fmt::format("bar '{}' needs at least one segment", spec.name));
+    if (!(spec.area > 0.0))
+      throw InputError(where_key("area"), fmt::format("bar '{}': the area must be positive", spec.name));
+    if (spec.material < 0 || static_cast<std::size_t>(spec.material) >= model.materials.size())
+      throw InputError(where_key("material"), fmt::format("bar '{}' has no material", spec.name));
+    if (spec.orientation == BarOrientation::hoop && !axisymmetric_)
+      throw InputError(where_key("orientation"),
+                       fmt::format("bar '{}': hoop bars (rings) need axisymmetric geometry", spec.name));
+    double length0 = 0.0;
+    for (int i = 0; i < D; ++i)
+      length0 += std::pow(spec.to[static_cast<std::size_t>(i)] - spec.from[static_cast<std::size_t>(i)], 2);
+    length0 = std::sqrt(length0);
+    if (!(length0 > 0.0))
+      throw InputError(where_key("to"), fmt::format("bar '{}' has zero length", spec.name));
+
+    Set set;
+    set.name = spec.name;
+    set.material = model.materials[static_cast<std::size_t>(spec.material)].material.get();
+    set.hoop = spec.orientation == BarOrientation::hoop;
+    set.material->setup(set.points, static_cast<std::size_t>(spec.segments));
+    const double rho0 = set.points.density.empty() ? 0.0 : set.points.density[0];
+    set.shear_modulus = set.points.shear_modulus.empty() ? 0.0 : set.points.shear_modulus[0];
+    set.bulk_modulus = set.points.sound_speed.empty() ? 0.0 : rho0 * std::pow(set.points.sound_speed[0], 2);
+    // First guess of the lateral rate: the elastic Poisson contraction.
+    const double k = set.bulk_modulus, g = set.shear_modulus;
+    const double poisson = k + g > 0.0 ? (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g)) : 0.5;
+    set.lateral_ratio.assign(static_cast<std::size_t>(spec.segments), -poisson);
+
+    // Bar nodes along the line, each located in its host.
+    const std::size_t first_node = node_mass_.size();
+    for (int b = 0; b <= spec.segments; ++b) {
+      double x[3];
+      for (int i = 0; i < 3; ++i)
+        x[i] = spec.from[static_cast<std::size_t>(i)] +
+               (spec.to[static_cast<std::size_t>(i)] - spec.from[static_cast<std::size_t>(i)]) * b /
+                   spec.segments;
+      const auto host = find_host(mesh, spec.host_part, x);
+      if (!host)
+        throw InputError(
+            spec.where,
+            fmt::format("bar '{}': node {} at ({:.6g}, {:.6g}{}) lies outside {}", spec.name, b + 1, x[0],
+                        x[1], D == 3 ? fmt::format(", {:.6g}", x[2]) : std::string(),
+                        spec.host_part >= 0
+                            ? "host part '" + model.parts[static_cast<std::size_t>(spec.host_part)].name + "'"
+                            : std::string("the mesh")));
+      double n[8];
+      shape_functions(D, host->xi, n);
+      for (int a = 0; a < host_nodes; ++a) {
+        host_node_.push_back(mesh.connectivity[static_cast<std::size_t>(host->element) * host_nodes +
+                                               static_cast<std::size_t>(a)]);
+        weight_.push_back(n[a]);
+      }
+      node_mass_.push_back(0.0);
+    }
+    // Segments: mass and reference length from the located (interpolated) positions.
+    const std::size_t set_index = sets_.size();
+    for (int s = 0; s < spec.segments; ++s) {
+      const std::size_t i = first_node + static_cast<std::size_t>(s), j = i + 1;
+      double xi[D], xj[D];
+      bar_node_position(x0.data(), i, xi);
+      bar_node_position(x0.data(), j, xj);
+      double l = 0.0;
+      for (int c = 0; c < D; ++c) l += (xj[c] - xi[c]) * (xj[c] - xi[c]);
+      l = std::sqrt(l);
+      const double r_bar = axisymmetric_ ? 0.5 * (xi[0] + xj[0]) : 0.0;
+      if (axisymmetric_ && !(r_bar > 0.0))
+        throw InputError(spec.where, fmt::format("bar '{}': segment {} lies on the axis", spec.name, s + 1));
+      // Volume: area x length (x 2 pi r in axisymmetric, where the area is per metre of circumference
+      // for bars along the segment, per metre of segment for rings).
+      const double volume = spec.area * l * (axisymmetric_ ? two_pi * r_bar : 1.0);
+      const double m = rho0 * volume;
+      segment_node_.push_back(i);
+      segment_node_.push_back(j);
+      segment_set_.push_back(set_index);
+      segment_point_.push_back(static_cast<std::size_t>(s));
+      segment_mass_.push_back(m);
+      reference_length_.push_back(set.hoop ? r_bar : l);
+      axial_strain_.push_back(0.0);
+      node_mass_[i] += 0.5 * m;
+      node_mass_[j] += 0.5 * m;
+      set.points.characteristic_length[static_cast<std::size_t>(s)] = l;
+    }
+    sets_.push_back(std::move(set));
+  }
+}
+
+template <int D>
+void EmbeddedBars<D>::bar_node_position(const double* x, std::size_t b, double* out) const {
+  for (int i = 0; i < D; ++i) out[i] = 0.0;
+  for (int a = 0; a < host_nodes; ++a) {
+    const std::size_t k = b * host_nodes + static_cast<std::size_t>(a);
+    for (int i = 0; i < D; ++i) out[i] += weight_[k] * x[host_node_[k] * D + i];
+  }
+}
+
+template <int D>
+void EmbeddedBars<D>::bar_node_velocity(const double* v, std::size_t b, double* out) const {
+  bar_node_position(v, b, out);  // the same interpolation
+}
+
+template <int D>
+void EmbeddedBars<D>::add_masses(std::vector<double>& node_mass) const {
+  for (std::size_t b = 0; b < node_mass_.size(); ++b)
+    for (int a = 0; a < host_nodes; ++a) {
+      const std::size_t k = b * host_nodes + static_cast<std::size_t>(a);
+      node_mass[static_cast<std::size_t>(host_node_[k])] += weight_[k] * node_mass_[b];
+    }
+}
+
+template <int D>
+void EmbeddedBars<D>::add_forces(const double* x, double* f) const {
+  for (std::size_t s = 0; s < segment_set_.size(); ++s) {
+    const Set& set = sets_[segment_set_[s]];
+    const MaterialPoints& pts = set.points;
+    const std::size_t p = segment_point_[s];
+    const std::size_t i = segment_node_[2 * s], j = segment_node_[2 * s + 1];
+    double xi[D], xj[D], fi[D] = {}, fj[D] = {};
+    bar_node_position(x, i, xi);
+    bar_node_position(x, j, xj);
+    const double sigma = pts.deviator[p].xx - pts.pressure[p];  // along the bar (its local x)
+    const double volume = segment_mass_[s] / pts.density[p];    // current volume, m^3
+    if (set.hoop) {
+      // Virtual power of the hoop stress against v_r / r at the segment centre
+      // (the axisymmetric element's hoop term, eq. of fem_elements.cpp).
+      const double r_bar = 0.5 * (xi[0] + xj[0]);
+      fi[0] = fj[0] = -0.5 * sigma * volume / r_bar;
+    } else {
+      double e[D], l = 0.0;
+      for (int c = 0; c < D; ++c) {
+        e[c] = xj[c] - xi[c];
+        l += e[c] * e[c];
+      }
+      l = std::sqrt(l);
+      // Axial force N = sigma A with the current area A = V / L (mass conservation).
+      const double force = sigma * volume / l;
+      for (int c = 0; c < D; ++c) {
+        fi[c] = force * e[c] / l;
+        fj[c] = -fi[c];
+      }
+    }
+    for (int a = 0; a < host_nodes; ++a) {
+      const std::size_t ki = i * host_nodes + static_cast<std::size_t>(a);
+      const std::size_t kj = j * host_nodes + static_cast<std::size_t>(a);
+      for (int c = 0; c < D; ++c) {
+        f[host_node_[ki] * D + c] += weight_[ki] * fi[c];
+        f[host_node_[kj] * D + c] += weight_[kj] * fj[c];
+      }
+    }
+  }
+}
+
+template <int D>
+void EmbeddedBars<D>::update(const double* x, const double* v, double dt, double time) {
+  std::vector<std::vector<double>> rate(sets_.size());
+  for (std::size_t k = 0; k < sets_.size(); ++k) rate[k].assign(sets_[k].points.size(), 0.0);
+  for (std::size_t s = 0; s < segment_set_.size(); ++s) {
+    const std::size_t i = segment_node_[2 * s], j = segment_node_[2 * s + 1];
+    double xi[D], xj[D], vi[D], vj[D];
+    bar_node_position(x, i, xi);
+    bar_node_position(x, j, xj);
+    bar_node_velocity(v, i, vi);
+    bar_node_velocity(v, j, vj);
+    double d = 0.0;
+    if (sets_[segment_set_[s]].hoop) {
+      // Ring strain rate v_r / r at the segment centre, mid-step geometry.
+      const double r_half = 0.5 * (xi[0] + xj[0]) - 0.25 * dt * (vi[0] + vj[0]);
+      d = 0.5 * (vi[0] + vj[0]) / r_half;
+      axial_strain_[s] = std::log(0.5 * (xi[0] + xj[0]) / reference_length_[s]);
+    } else {
+      double dx[D], lh = 0.0, l = 0.0, dv_e = 0.0;
+      for (int c = 0; c < D; ++c) {
+        dx[c] = (xj[c] - xi[c]) - 0.5 * dt * (vj[c] - vi[c]);
+        lh += dx[c] * dx[c];
+        l += (xj[c] - xi[c]) * (xj[c] - xi[c]);
+      }
+      lh = std::sqrt(lh);
+      for (int c = 0; c < D; ++c) dv_e += (vj[c] - vi[c]) * dx[c] / lh;
+      d = dv_e / lh;
+      axial_strain_[s] = std::log(std::sqrt(l) / reference_length_[s]);
+      sets_[segment_set_[s]].points.characteristic_length[segment_point_[s]] = std::sqrt(l);
+    }
+    rate[segment_set_[s]][segment_point_[s]] = d;
+  }
+  for (std::size_t k = 0; k < sets_.size(); ++k) update_set(sets_[k], rate[k], dt, time);
+}
+
+template <int D>
+void EmbeddedBars<D>::update_set(Set& set, const std::vector<double>& axial_rate, double dt, double time) {
+  MaterialPoints& pts = set.points;
+  const std::size_t n = pts.size();
+  if (n == 0) return;
+  const MaterialPoints start = pts;
+  const MaterialContext ctx{dt, time};
+  std::vector<double> lateral(n), residual(n), lateral_old(n), residual_old(n);
+  // Lateral stress after the update with the lateral rates `lateral`.
+  auto evaluate = [&]() {
+    pts = start;
+    for (std::size_t p = 0; p < n; ++p) {
+      const double volumetric = axial_rate[p] + 2.0 * lateral[p];
+      pts.density_previous[p] = start.density[p];
+      pts.density[p] = start.density[p] / (1.0 + volumetric * dt);
+      pts.strain_rate[p] = SymTensor{axial_rate[p], lateral[p], lateral[p], 0.0, 0.0, 0.0};
+      pts.spin[p] = Spin{};
+      pts.artificial_viscosity[p] = 0.0;
+    }
+    set.material->update(pts, ctx);
+    for (std::size_t p = 0; p < n; ++p) residual[p] = pts.deviator[p].yy - pts.pressure[p];
+  };
+  auto converged = [&](std::size_t p) {
+    const double axial = std::abs(pts.deviator[p].xx - pts.pressure[p]);
+    return std::abs(residual[p]) <= 1e-7 * axial + 1.0;  // Pa
+  };
+  for (std::size_t p = 0; p < n; ++p) lateral[p] = set.lateral_ratio[p] * axial_rate[p];
+  evaluate();
+  // Elastic lateral stiffness d(sigma_l)/d(d_l dt) with both lateral rates equal: 2K + 2G/3.
+  const double stiffness = 2.0 * set.bulk_modulus + 2.0 * set.shear_modulus / 3.0;
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    bool all = true;
+    for (std::size_t p = 0; p < n; ++p) all = all && converged(p);
+    if (all) break;
+    for (std::size_t p = 0; p < n; ++p) {
+      const double step = iteration > 0 && residual[p] != residual_old[p]
+                              ? -residual[p] * (lateral[p] - lateral_old[p]) / (residual[p] - residual_old[p])
+                              : -residual[p] / (stiffness * dt);
+      lateral_old[p] = lateral[p];
+      residual_old[p] = residual[p];
+      if (!converged(p)) lateral[p] += step;
+    }
+    evaluate();
+  }
+  for (std::size_t p = 0; p < n; ++p)
+    if (std::abs(axial_rate[p]) > 1e-12 && std::isfinite(lateral[p] / axial_rate[p]))
+      set.lateral_ratio[p] = lateral[p] / axial_rate[p];
+}
+
+template <int D>
+double EmbeddedBars<D>::internal_energy() const {
+  double e = 0.0;
+  for (std::size_t s = 0; s < segment_set_.size(); ++s)
+    e += segment_mass_[s] * sets_[segment_set_[s]].points.specific_energy[segment_point_[s]];
+  return e;
+}
+
+template <int D>
+double EmbeddedBars<D>::kinetic_energy(const double* v) const {
+  double k = 0.0;
+  for (std::size_t b = 0; b < node_mass_.size(); ++b) {
+    double vb[D];
+    bar_node_velocity(v, b, vb);
+    for (int c = 0; c < D; ++c) k += 0.5 * node_mass_[b] * vb[c] * vb[c];
+  }
+  return k;
+}
+
+template <int D>
+double EmbeddedBars<D>::mass() const {
+  double m = 0.0;
+  for (double s : segment_mass_) m += s;
+  return m;
+}
+
+template <int D>
+double EmbeddedBars<D>::stable_time_step(const double* x, std::size_t& segment) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t s = 0; s < segment_set_.size(); ++s) {
+    const Set& set = sets_[segment_set_[s]];
+    const std::size_t i = segment_node_[2 * s], j = segment_node_[2 * s + 1];
+    double xi[D], xj[D];
+    bar_node_position(x, i, xi);
+    bar_node_position(x, j, xj);
+    double l = 0.0;
+    if (set.hoop) {
+      l = 0.5 * (xi[0] + xj[0]);  // a ring's breathing mode: omega = c / r
+    } else {
+      for (int c = 0; c < D; ++c) l += (xj[c] - xi[c]) * (xj[c] - xi[c]);
+      l = std::sqrt(l);
+    }
+    const double t = l / set.points.wave_speed(segment_point_[s]);
+    if (t < best || !(t >= 0.0)) {
+      best = t >= 0.0 ? t : -1.0;
+      segment = s;
+    }
+  }
+  return best;
+}
+
+template <int D>
+const std::string& EmbeddedBars<D>::set_name(std::size_t s) const {
+  return sets_[segment_set_[s]].name;
+}
+
+template <int D>
+double EmbeddedBars<D>::axial_stress(std::size_t s) const {
+  const MaterialPoints& pts = sets_[segment_set_[s]].points;
+  const std::size_t p = segment_point_[s];
+  return pts.deviator[p].xx - pts.pressure[p];
+}
+
+template <int D>
+double EmbeddedBars<D>::axial_force(std::size_t s) const {
+  const Set& set = sets_[segment_set_[s]];
+  const std::size_t p = segment_point_[s];
+  // sigma A with A = V / L: the ring's cross-section for hoop bars (V / (2 pi r)).
+  const double volume = segment_mass_[s] / set.points.density[p];
+  const double l = set.points.characteristic_length[p];
+  const double length = set.hoop ? two_pi * reference_length_[s] * std::exp(axial_strain_[s]) : l;
+  return axial_stress(s) * volume / length;
+}
+
+template <int D>
+double EmbeddedBars<D>::plastic_strain(std::size_t s) const {
+  return sets_[segment_set_[s]].points.plastic_strain[segment_point_[s]];
+}
+
+template <int D>
+double EmbeddedBars<D>::plastic_strain_rate(std::size_t s) const {
+  return sets_[segment_set_[s]].points.plastic_strain_rate[segment_point_[s]];
+}
+
+template <int D>
+double EmbeddedBars<D>::temperature(std::size_t s) const {
+  return sets_[segment_set_[s]].points.temperature[segment_point_[s]];
+}
+
+template <int D>
+const MaterialPoints& EmbeddedBars<D>::points_of(std::size_t s, std::size_t& point) const {
+  point = segment_point_[s];
+  return sets_[segment_set_[s]].points;
+}
+
+template class EmbeddedBars<2>;
+template class EmbeddedBars<3>;
+
+}  // namespace camouflet

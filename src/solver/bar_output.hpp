@@ -1,0 +1,31 @@
+#pragma once
+// Rebar strain histories (issue 6): `bars.csv` in the output folder, one row
+// per gauge interval (every cycle when 0) with `time_s` and, for every
+// segment `<bar>.<k>` (k from 1 at the bar's `from` end), its axial (log)
+// strain, axial stress (Pa), axial force (N; per metre of depth in plane
+// strain, the whole ring in axisymmetric mode) and plastic strain.
+#include <memory>
+
+#include "fem/embedded_bars.hpp"
+#include "output/gauge_csv.hpp"
+#include "solver/run.hpp"
+
+namespace camouflet {
+
+template <int D>
+class BarCsv {
+ public:
+  // No file when the model has no bars or the run writes no output.
+  BarCsv(const Model& model, const RunOptions& options, const EmbeddedBars<D>& bars);
+  void after_cycle(double time, const EmbeddedBars<D>& bars, bool last = false);
+
+ private:
+  std::unique_ptr<GaugeCsv> csv_;
+  double interval_ = 0.0, next_ = 0.0;
+  std::vector<double> row_;
+};
+
+extern template class BarCsv<2>;
+extern template class BarCsv<3>;
+
+}  // namespace camouflet

@@ -47,8 +47,9 @@ void neighbour_search(benchmark::State& state) {
   }
   state.counters["particles"] = static_cast<double>(sph.size());
   state.counters["mean_listed"] = static_cast<double>(search.pair_count()) / static_cast<double>(sph.size());
-  state.counters["ns_per_particle"] = benchmark::Counter(
-      static_cast<double>(sph.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle"] =
+      benchmark::Counter(static_cast<double>(sph.size()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 template <int D>
@@ -64,8 +65,9 @@ void force_loop(benchmark::State& state) {
   for (int c : sph.particles().neighbour_count) neighbours += c;
   state.counters["particles"] = static_cast<double>(sph.size());
   state.counters["mean_neighbours"] = neighbours / static_cast<double>(sph.size());
-  state.counters["ns_per_particle"] = benchmark::Counter(
-      static_cast<double>(sph.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle"] =
+      benchmark::Counter(static_cast<double>(sph.size()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 template <int D>
@@ -80,8 +82,9 @@ void full_cycle(benchmark::State& state) {
     sph.step(dt, t);
   }
   state.counters["particles"] = static_cast<double>(sph.size());
-  state.counters["ns_per_particle_cycle"] = benchmark::Counter(
-      static_cast<double>(sph.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle_cycle"] =
+      benchmark::Counter(static_cast<double>(sph.size()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // camouflet: the command line. Subcommands are in their own files (commands.hpp).
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "core/error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Camouflet: explosions buried in soil and the structures they load"};
@@ -13,6 +13,18 @@ int main(int argc, char** argv) {
   camouflet::app::add_run_command(app, result);
   camouflet::app::add_check_command(app, result);
   camouflet::app::add_material_test_command(app, result);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // A malformed command line is bad input too (docs/exit-codes.md).
+    app.exit(e);
+    return camouflet::exit_bad_input;
+  }
   return result.exit_code;
 }

@@ -1,23 +1,67 @@
-// Placeholder `run` and `check` until the case reader lands (issue 2).
+// `camouflet run CASE [-o DIR] [--quiet] [--threads N]`
+#include <fmt/format.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/error_report.hpp"
+#include "case/case_reader.hpp"
+#include "solver/run.hpp"
 
 namespace camouflet::app {
 
-void add_run_command(CLI::App& app, CommandResult& result) {
-  auto* cmd = app.add_subcommand("run", "Run a case");
-  cmd->callback([&result] {
-    std::cerr << "camouflet run: not yet implemented\n";
-    result.exit_code = 2;
-  });
+namespace {
+
+// Ctrl-C or a kill: every gauge row and snapshot written so far is already
+// complete on disk (rows are flushed one by one, snapshots renamed into
+// place), so the process ends at once with the documented status 130.
+// Only async-signal-safe calls here.
+extern "C" void on_interrupt(int) {
+  static const char message[] = "\ncamouflet: interrupted; output written so far is complete\n";
+  [[maybe_unused]] const auto n = write(STDERR_FILENO, message, sizeof message - 1);
+  _exit(exit_interrupted);
 }
 
-void add_check_command(CLI::App& app, CommandResult& result) {
-  auto* cmd = app.add_subcommand("check", "Read and validate a case without running it");
-  cmd->callback([&result] {
-    std::cerr << "camouflet check: not yet implemented\n";
-    result.exit_code = 2;
+struct RunArguments {
+  std::string case_file;
+  std::string output_dir;
+  bool quiet = false;
+  int threads = 0;
+};
+}  // namespace
+
+void add_run_command(CLI::App& app, CommandResult& result) {
+  auto args = std::make_shared<RunArguments>();
+  auto* cmd = app.add_subcommand("run", "Run a case and write its output folder");
+  cmd->add_option("CASE", args->case_file, "Case file (TOML, see docs/case-format.md)")->required();
+  cmd->add_option("-o,--output", args->output_dir, "Output folder (default: results/<case name>)");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
+  cmd->add_option("-t,--threads", args->threads, "OpenMP threads (default: all)")->check(CLI::PositiveNumber);
+  cmd->callback([args, &result] {
+    result.exit_code = run_guarded([&] {
+      const Model model = read_case(args->case_file);
+      std::signal(SIGINT, on_interrupt);
+      std::signal(SIGTERM, on_interrupt);
+      RunOptions options;
+      options.output_dir = args->output_dir.empty() ? std::filesystem::path("results") /
+                                                          std::filesystem::path(args->case_file).stem()
+                                                    : std::filesystem::path(args->output_dir);
+      options.progress = args->quiet ? ProgressStyle::none : ProgressStyle::automatic;
+      options.threads = args->threads;
+      if (args->threads > 0) omp_set_num_threads(args->threads);
+      const RunSummary summary = run_model(model, options);
+      if (!args->quiet)
+        std::cerr << fmt::format(
+            "{}: t = {:g} s after {} cycles in {:.1f} s wall time, energy error {:.2e}\n",
+            summary.stop_reason, summary.time, summary.cycles, summary.wall_seconds,
+            summary.energy.relative_error);
+      std::cout << "results in " << options.output_dir.string() << '\n';
+      return summary.failed ? static_cast<int>(exit_numerical_failure) : static_cast<int>(exit_ok);
+    });
   });
 }
 

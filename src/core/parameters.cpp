@@ -85,7 +85,13 @@ void Parameters::fail(const std::string& key, const std::string& message) const 
 const Parameters::Value& Parameters::get(const std::string& key, Value::Kind kind) {
   asked_.insert(key);
   auto it = values_.find(key);
-  if (it == values_.end()) fail(key, "required parameter is missing");
+  if (it == values_.end()) {
+    // A required parameter that is absent is most often misspelt: point at the typo.
+    for (const auto& [k, v] : values_)
+      if (!used_.count(k) && !asked_.count(k) && nearest(k, {key}) == key)
+        fail(k, fmt::format("unknown parameter; did you mean '{}'?", key));
+    fail(key, "required parameter is missing");
+  }
   used_.insert(key);
   if (it->second.kind != kind) {
     // An integer list or a single number where a list is wanted is fine.

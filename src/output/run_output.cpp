@@ -1,17 +1,149 @@
-// Placeholder so the solver can link before the output layer lands: records
-// nothing, writes nothing. Replaced by the output work (issue 2).
+// The run's output folder (architecture.md, "Contracts"): gauges, CSVs, field
+// snapshots and the summary, each written by its own small file; this one
+// only schedules them.
 #include "output/run_output.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "output/gauge_csv.hpp"
+#include "output/gauges.hpp"
+#include "output/summary_json.hpp"
+#include "output/text_file.hpp"
+#include "output/vtu_writer.hpp"
 
 namespace camouflet {
 
+namespace fs = std::filesystem;
+
+namespace {
+// Sampling instants are compared with a relative slack so that an interval
+// that is an exact multiple of dt is not missed by round-off.
+constexpr double time_slack = 1e-9;
+// When a folder is written, the CSVs hold every sample; the in-memory
+// histories (gauges()) then stop growing at this many values (1 GiB), so a
+// long run sampling every cycle cannot exhaust memory. Peaks for the summary
+// are kept sample by sample and stay exact.
+constexpr std::size_t memory_values_limit = std::size_t{1} << 27;
+}  // namespace
+
 struct RunOutput::Impl {
-  std::vector<GaugeSeries> gauges;
+  const Model& model;
+  fs::path dir;  // empty: sample only, write nothing
+  std::vector<std::vector<LocatedGauge>> located;
+  std::vector<GaugeSeries> series;
+  std::vector<GroupPeaks> peaks;
+  std::vector<std::size_t> samples;  // rows taken per group (written to the CSV)
+  std::size_t values_in_memory = 0;
+  std::vector<std::unique_ptr<GaugeCsv>> csv;
+  PvdIndex pvd;
+  int snapshots = 0;
+  double next_field = 0.0, next_gauge = 0.0;
+  std::int64_t last_field_cycle = -1, last_gauge_cycle = -1;
+  std::vector<double> row;
+
+  explicit Impl(const Model& m) : model(m) {}
+
+  void sample(const FieldSnapshot& s) {
+    for (std::size_t g = 0; g < located.size(); ++g) {
+      row.clear();
+      for (const auto& gauge : located[g]) sample_gauge(gauge, s, row);
+      auto& ser = series[g];
+      const std::size_t nq = ser.quantities.size(), np = located[g].size();
+      for (std::size_t p = 0; p < np; ++p)
+        for (std::size_t q = 0; q < nq; ++q) peaks[g].add(q * np + p, row[p * nq + q], s.time);
+      ++samples[g];
+      if (dir.empty() || values_in_memory + row.size() <= memory_values_limit) {
+        ser.time.push_back(s.time);
+        for (std::size_t p = 0; p < np; ++p)
+          for (std::size_t q = 0; q < nq; ++q) ser.values[q][p].push_back(row[p * nq + q]);
+        values_in_memory += row.size() + 1;
+      }
+      if (!dir.empty()) csv[g]->write_row(s.time, row);
+    }
+    last_gauge_cycle = s.cycle;
+  }
+
+  void snapshot(const FieldSnapshot& s) {
+    last_field_cycle = s.cycle;
+    if (dir.empty()) return;
+    const std::string mesh_file = fmt::format("fields_{:04}.vtu", snapshots);
+    if (s.element_count() > 0) {
+      write_mesh_vtu(dir / mesh_file, s);
+      pvd.add(s.time, 0, mesh_file);
+    }
+    if (s.particle_count() > 0) {
+      const std::string particle_file = fmt::format("particles_{:04}.vtu", snapshots);
+      write_particle_vtu(dir / particle_file, s);
+      pvd.add(s.time, 1, particle_file);
+    }
+    ++snapshots;
+    pvd.write(dir / "fields.pvd");
+  }
 };
 
-RunOutput::RunOutput(const Model&, const RunOptions&, const FieldSnapshot&) : impl_(std::make_unique<Impl>()) {}
+RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldSnapshot& initial)
+    : impl_(std::make_unique<Impl>(model)) {
+  Impl& o = *impl_;
+  // Gauges first: a gauge outside the mesh is bad input and must leave no folder behind.
+  const auto quantities = gauge_quantities(initial.dimension);
+  for (const auto& group : model.gauges) {
+    std::vector<LocatedGauge> located;
+    for (const auto& point : group.points) located.push_back(locate_gauge(point, initial));
+    GaugeSeries ser;
+    ser.group = group.name;
+    for (const auto& point : group.points) ser.gauge_names.push_back(point.name);
+    ser.quantities = quantities;
+    ser.values.assign(quantities.size(), std::vector<std::vector<double>>(group.points.size()));
+    o.located.push_back(std::move(located));
+    o.series.push_back(std::move(ser));
+    o.peaks.emplace_back();
+    o.samples.push_back(0);
+  }
+
+  o.dir = options.output_dir;
+  if (!o.dir.empty()) {
+    fs::create_directories(o.dir);
+    if (!model.case_file.empty() && fs::is_regular_file(model.case_file))
+      fs::copy_file(model.case_file, o.dir / "case.toml", fs::copy_options::overwrite_existing);
+    for (const auto& ser : o.series)
+      o.csv.push_back(
+          std::make_unique<GaugeCsv>(o.dir / (ser.group + ".csv"), ser.gauge_names, ser.quantities));
+  }
+  o.next_field = model.output.field_interval;
+  o.next_gauge = model.output.gauge_interval;
+  o.snapshot(initial);
+  o.sample(initial);
+}
+
 RunOutput::~RunOutput() = default;
-void RunOutput::after_cycle(const FieldSnapshot&) {}
-void RunOutput::finish(const FieldSnapshot&, const RunSummary&) {}
-const std::vector<RunOutput::GaugeSeries>& RunOutput::gauges() const { return impl_->gauges; }
+
+void RunOutput::after_cycle(const FieldSnapshot& state) {
+  Impl& o = *impl_;
+  const double gi = o.model.output.gauge_interval, fi = o.model.output.field_interval;
+  if (gi <= 0.0 || state.time >= o.next_gauge * (1.0 - time_slack)) {
+    o.sample(state);
+    if (gi > 0.0)
+      while (o.next_gauge <= state.time * (1.0 + time_slack)) o.next_gauge += gi;
+  }
+  if (fi > 0.0 && state.time >= o.next_field * (1.0 - time_slack)) {
+    o.snapshot(state);
+    while (o.next_field <= state.time * (1.0 + time_slack)) o.next_field += fi;
+  }
+}
+
+void RunOutput::finish(const FieldSnapshot& final_state, const RunSummary& summary) {
+  Impl& o = *impl_;
+  if (o.last_gauge_cycle != final_state.cycle) o.sample(final_state);
+  if (o.last_field_cycle != final_state.cycle) o.snapshot(final_state);
+  if (o.dir.empty()) return;
+  for (auto& c : o.csv) c->close();
+  write_file_atomically(o.dir / "summary.json", summary_json(o.model, summary, o.series, o.peaks, o.samples));
+}
+
+const std::vector<RunOutput::GaugeSeries>& RunOutput::gauges() const {
+  return impl_->series;
+}
 
 }  // namespace camouflet

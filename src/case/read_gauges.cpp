@@ -1,0 +1,71 @@
+// [[gauges]] groups and [[detonation]] points (docs/case-format.md).
+#include <fmt/format.h>
+
+#include <set>
+
+#include "case/sections.hpp"
+
+namespace camouflet::case_detail {
+
+void read_gauges(TomlReader& root, Model& model) {
+  const int dim = model.dimension();
+  std::set<std::string> groups;
+  for (auto& g : root.tables("gauges")) {
+    GaugeGroup group;
+    group.where = g.where();
+    group.name = g.string("name");
+    check_name(g, "name", group.name);
+    if (!groups.insert(group.name).second)
+      g.fail("name", fmt::format("gauge group '{}' is defined twice", group.name));
+    const bool has_points = g.has("points"), has_line = g.has("from") || g.has("to") || g.has("count");
+    g.allow({"from", "to", "count"});
+    if (has_points == has_line)
+      g.fail(has_points ? "from" : "points",
+             "a gauge group needs either `points = [{name, position}, ...]` or a line `from`, `to`, `count`");
+    if (has_points) {
+      auto points = g.tables("points");
+      if (points.empty()) g.fail("points", "needs at least one gauge");
+      std::set<std::string> names;
+      for (auto& p : points) {
+        GaugePoint gauge;
+        gauge.name = p.string("name");
+        check_name(p, "name", gauge.name);
+        if (!names.insert(gauge.name).second)
+          p.fail("name", fmt::format("gauge '{}' appears twice", gauge.name));
+        gauge.position = p.vector("position", dim);
+        gauge.where = p.where("position");
+        p.finish();
+        group.points.push_back(std::move(gauge));
+      }
+    } else {
+      const auto from = g.vector("from", dim), to = g.vector("to", dim);
+      const std::int64_t count = g.integer("count", 0);
+      if (count < 1 || count > 10000) g.fail("count", fmt::format("must lie in [1, 10000], got {}", count));
+      for (std::int64_t k = 0; k < count; ++k) {
+        GaugePoint gauge;
+        gauge.name = fmt::format("p{}", k + 1);
+        const double w = count > 1 ? static_cast<double>(k) / static_cast<double>(count - 1) : 0.0;
+        for (std::size_t i = 0; i < 3; ++i) gauge.position[i] = (1.0 - w) * from[i] + w * to[i];
+        gauge.where = g.where("from");
+        gauge.where.key = g.key_path(fmt::format("from/to (gauge {})", gauge.name));
+        group.points.push_back(std::move(gauge));
+      }
+    }
+    g.finish();
+    model.gauges.push_back(std::move(group));
+  }
+}
+
+void read_detonations(TomlReader& root, Model& model) {
+  const int dim = model.dimension();
+  for (auto& d : root.tables("detonation")) {
+    DetonationPoint point;
+    point.position = d.vector("position", dim);
+    point.time = d.non_negative("time", 0.0);
+    d.finish();
+    model.detonations.push_back(point);
+    model.detonation_where.push_back(d.where());
+  }
+}
+
+}  // namespace camouflet::case_detail

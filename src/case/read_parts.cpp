@@ -1,0 +1,178 @@
+// [[parts]]: a named part of one material, meshed by the built-in block
+// generator or read from a Gmsh file (docs/case-format.md).
+#include <fmt/format.h>
+
+#include <set>
+
+#include "case/sections.hpp"
+#include "mesh/block_generator.hpp"
+#include "mesh/gmsh_import.hpp"
+#include "mesh/particle_fill.hpp"
+
+namespace camouflet::case_detail {
+
+namespace {
+
+int find_material(const Model& model, TomlReader& part, const std::string& name) {
+  std::vector<std::string> names;
+  for (std::size_t m = 0; m < model.materials.size(); ++m) {
+    if (model.materials[m].name == name) return static_cast<int>(m);
+    names.push_back(model.materials[m].name);
+  }
+  const std::string guess = nearest(name, names);
+  part.fail("material",
+            guess.empty()
+                ? fmt::format("no material '{}' is defined ({})", name,
+                              names.empty() ? "the case has no [materials] section"
+                                            : "defined: " + fmt::format("{}", fmt::join(names, ", ")))
+                : fmt::format("no material '{}' is defined; did you mean '{}'?", name, guess));
+}
+
+void read_block(TomlReader& block, Model& model, const std::string& name, int part_index) {
+  const int dim = model.dimension();
+  BlockSpec spec;
+  spec.name = name;
+  spec.part = part_index;
+  spec.origin = block.vector("origin", dim, {0, 0, 0});
+  spec.size = block.vector("size", dim);
+  for (int i = 0; i < dim; ++i)
+    if (!(spec.size[static_cast<std::size_t>(i)] > 0.0))
+      block.fail("size", fmt::format("every extent must be positive, got {} along axis {}",
+                                     spec.size[static_cast<std::size_t>(i)], "xyz"[i]));
+  const auto cells = block.numbers("cells");
+  if (static_cast<int>(cells.size()) != dim)
+    block.fail("cells", fmt::format("expected {} cell counts, got {}", dim, cells.size()));
+  for (int i = 0; i < dim; ++i) {
+    const double c = cells[static_cast<std::size_t>(i)];
+    if (!(c >= 1.0) || c != static_cast<double>(static_cast<long long>(c)) || c > 1e7)
+      block.fail("cells", fmt::format("cell counts must be whole numbers from 1 to 1e7, got {}", c));
+    spec.cells[static_cast<std::size_t>(i)] = static_cast<int>(c);
+  }
+  double total = 1.0;
+  for (int i = 0; i < dim; ++i) total *= spec.cells[static_cast<std::size_t>(i)];
+  if (total > 5e7)
+    block.fail("cells", fmt::format("{:.0f} elements is more than this build handles (5e7)", total));
+  spec.grading = block.vector("grading", dim, {1, 1, 1});
+  if (dim == 2) spec.grading[2] = 1.0;
+  for (int i = 0; i < dim; ++i)
+    if (!(spec.grading[static_cast<std::size_t>(i)] > 0.0))
+      block.fail("grading", "every ratio must be positive");
+  block.finish();
+  try {
+    add_block(model.mesh, spec);
+  } catch (const InputError& e) {
+    // The generator knows nothing of the case file: name the block instead.
+    throw InputError(block.where(), e.message());
+  }
+}
+
+// `fill = { shape = ..., spacing = ... }` of an SPH part (issue 3; docs/case-format.md).
+void read_fill(TomlReader& fill, Model& model, int part_index) {
+  const int dim = model.dimension();
+  ParticleFillSpec spec;
+  spec.part = part_index;
+  spec.where = fill.where();
+  const std::string shape = fill.choice("shape", {"box", "sphere", "cylinder", "polygon"}, "box");
+  auto& region = spec.region;
+  if (shape == "box") {
+    region.shape = ParticleRegion::Shape::box;
+    region.min = fill.vector("min", dim);
+    region.max = fill.vector("max", dim);
+    for (int i = 0; i < dim; ++i)
+      if (!(region.max[static_cast<std::size_t>(i)] > region.min[static_cast<std::size_t>(i)]))
+        fill.fail("max", fmt::format("the box is empty: max <= min along axis {}", "xyz"[i]));
+  } else if (shape == "sphere" || shape == "cylinder") {
+    region.shape = shape == "sphere" ? ParticleRegion::Shape::sphere : ParticleRegion::Shape::cylinder;
+    region.centre = fill.vector("centre", dim);
+    region.radius = fill.positive("radius");
+    if (shape == "cylinder") {
+      region.length = fill.positive("length");
+      if (dim == 3) region.axis = fill.vector("axis", dim, {0, 0, 1});
+    }
+  } else {
+    if (dim != 2) fill.fail("shape", "a polygon fills a 2-D region only");
+    region.shape = ParticleRegion::Shape::polygon;
+    const auto v = fill.numbers("vertices");
+    if (v.size() < 6 || v.size() % 2 != 0)
+      fill.fail("vertices", "a polygon needs at least 3 vertices as a flat list [x1, y1, x2, y2, ...]");
+    for (std::size_t k = 0; k < v.size(); k += 2) region.polygon.push_back({v[k], v[k + 1]});
+  }
+  spec.spacing = fill.positive("spacing");
+  if (fill.has("grading_point")) {
+    spec.graded = true;
+    spec.grading_point = fill.vector("grading_point", dim);
+    spec.grading_ratio = fill.number("grading_ratio");
+    if (!(spec.grading_ratio >= 1.0)) fill.fail("grading_ratio", "the grading ratio must be at least 1");
+    spec.max_spacing = fill.positive("max_spacing");
+    if (spec.max_spacing < spec.spacing)
+      fill.fail("max_spacing",
+                fmt::format("max_spacing {} is below spacing {}", spec.max_spacing, spec.spacing));
+  }
+  fill.finish();
+  fill_particles(model.particles, spec, model.run.mode);
+}
+
+}  // namespace
+
+void read_parts(TomlReader& root, Model& model, const std::filesystem::path& case_dir) {
+  const int dim = model.dimension();
+  model.mesh.dimension = dim;
+  model.mesh.nodes_per_element = dim == 3 ? 8 : 4;
+  std::set<std::string> seen;
+  auto parts = root.tables("parts");
+  if (parts.empty()) throw InputError(root.where("parts"), "the case has no [[parts]]: nothing to simulate");
+  for (auto& p : parts) {
+    Part part;
+    part.where = p.where();
+    part.name = p.string("name");
+    check_name(p, "name", part.name);
+    if (!seen.insert(part.name).second) p.fail("name", fmt::format("part '{}' is defined twice", part.name));
+    part.material = find_material(model, p, p.string("material"));
+    const std::string kind = p.choice("kind", {"fem", "sph"}, "fem");
+    part.kind = kind == "sph" ? PartKind::sph : PartKind::fem;
+    part.initial_velocity = p.vector("initial_velocity", dim, {0, 0, 0});
+    const int index = static_cast<int>(model.parts.size());
+    model.parts.push_back(part);
+    if (part.kind == PartKind::sph) {
+      auto fill = p.table("fill");
+      if (!fill) p.fail("fill", "an SPH part needs `fill = { shape = ..., spacing = ... }`");
+      if (p.has("block") || p.has("gmsh"))
+        p.fail(p.has("block") ? "block" : "gmsh", "an SPH part is filled, not meshed");
+      read_fill(*fill, model, index);
+      p.finish();
+      continue;
+    }
+
+    const bool has_block = p.has("block"), has_gmsh = p.has("gmsh");
+    if (has_block == has_gmsh)
+      p.fail(has_block ? "gmsh" : "block",
+             "a part needs exactly one mesh source: `block = {...}` or `gmsh = \"file.msh\"`");
+    if (has_block) {
+      auto block = p.table("block");
+      read_block(*block, model, part.name, index);
+    } else {
+      GmshPartRequest request;
+      const std::filesystem::path file = p.string("gmsh");
+      request.file = file.is_absolute() ? file : case_dir / file;
+      request.file_where = p.where("gmsh");
+      request.physical = p.string("physical");
+      request.physical_where = p.where("physical");
+      request.part = index;
+      import_gmsh_part(model.mesh, request);
+    }
+    p.finish();
+  }
+}
+
+void check_name(const TomlReader& table, const std::string& key, const std::string& name) {
+  const bool ok =
+      !name.empty() && name.size() <= 64 &&
+      name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") ==
+          std::string::npos &&
+      name.front() != '.';
+  if (!ok)
+    table.fail(key,
+               fmt::format("'{}' is not a valid name: use 1 to 64 letters, digits, '_', '-' or '.'", name));
+}
+
+}  // namespace camouflet::case_detail

@@ -1,0 +1,62 @@
+// [run] and [output]: run control and output intervals (docs/case-format.md).
+#include <fmt/format.h>
+
+#include "case/sections.hpp"
+
+namespace camouflet::case_detail {
+
+void read_run(TomlReader& r, Model& model) {
+  RunControl& run = model.run;
+  run.where = r.where();
+  const std::string geometry = r.choice("geometry", {"plane_strain", "axisymmetric", "3d"}, "plane_strain");
+  run.mode = geometry == "3d"             ? GeometryMode::three_d
+             : geometry == "axisymmetric" ? GeometryMode::axisymmetric
+                                          : GeometryMode::plane_strain;
+  run.end_time = r.positive("end_time");
+  run.cfl = r.number("cfl", run.cfl);
+  // Central differences are stable for dt below the critical step: a factor above 1 is never safe.
+  if (!(run.cfl > 0.0 && run.cfl <= 1.0)) r.fail("cfl", fmt::format("must lie in (0, 1], got {}", run.cfl));
+  run.initial_dt = r.non_negative("initial_dt", run.initial_dt);
+  run.min_dt = r.non_negative("min_dt", run.min_dt);
+  if (r.has("max_dt")) run.max_dt = r.positive("max_dt");
+  if (run.min_dt >= run.max_dt) r.fail("min_dt", fmt::format("must be below max_dt = {} s", run.max_dt));
+  if (run.initial_dt > run.max_dt)
+    r.fail("initial_dt", fmt::format("must not exceed max_dt = {} s", run.max_dt));
+  if (r.has("max_cycles")) {
+    run.max_cycles = r.integer("max_cycles", run.max_cycles);
+    if (run.max_cycles < 1) r.fail("max_cycles", "must be at least 1");
+  }
+  run.dt_growth = r.number("dt_growth", run.dt_growth);
+  if (!(run.dt_growth >= 1.0)) r.fail("dt_growth", fmt::format("must be at least 1, got {}", run.dt_growth));
+  if (r.has("energy_error_limit")) run.energy_error_limit = r.positive("energy_error_limit");
+
+  if (auto v = r.table("viscosity")) {
+    run.viscosity_linear = v->non_negative("linear", run.viscosity_linear);
+    run.viscosity_quadratic = v->non_negative("quadratic", run.viscosity_quadratic);
+    v->finish();
+  }
+  if (auto h = r.table("hourglass")) {
+    const std::string form = h->choice("form", {"viscous", "stiffness", "none"}, "viscous");
+    run.hourglass = form == "stiffness" ? HourglassForm::stiffness
+                    : form == "none"    ? HourglassForm::none
+                                        : HourglassForm::viscous;
+    run.hourglass_coefficient = h->non_negative("coefficient", run.hourglass_coefficient);
+    if (run.hourglass_coefficient > 0.5)
+      h->fail("coefficient", fmt::format("must not exceed 0.5, got {}", run.hourglass_coefficient));
+    h->finish();
+  }
+  r.finish();
+}
+
+void read_output(TomlReader& r, Model& model) {
+  OutputControl& out = model.output;
+  out.field_interval = r.non_negative("field_interval", out.field_interval);
+  out.gauge_interval = r.non_negative("gauge_interval", out.gauge_interval);
+  out.log_interval_s = r.non_negative("log_interval", out.log_interval_s);
+  if (out.field_interval > 0.0 && model.run.end_time / out.field_interval > 1e5)
+    r.fail("field_interval",
+           fmt::format("asks for {:.0f} snapshots; at most 100000", model.run.end_time / out.field_interval));
+  r.finish();
+}
+
+}  // namespace camouflet::case_detail

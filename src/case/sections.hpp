@@ -1,0 +1,27 @@
+#pragma once
+// The case reader's section readers, one file each (case/read_*.cpp), and the
+// whole-model check run before the first cycle (case/check_model.cpp).
+#include <filesystem>
+
+#include "case/toml_reader.hpp"
+#include "model/model.hpp"
+
+namespace camouflet::case_detail {
+
+void read_run(TomlReader& run, Model& model);
+void read_output(TomlReader& output, Model& model);
+void read_materials(TomlReader& materials, Model& model);
+void read_parts(TomlReader& root, Model& model, const std::filesystem::path& case_dir);
+void read_boundaries(TomlReader& root, Model& model);
+// [sph]: numerical SPH settings (sph/sph_options.hpp), checked here.
+void read_sph(TomlReader& sph, Model& model);
+void read_gauges(TomlReader& root, Model& model);
+void read_detonations(TomlReader& root, Model& model);
+
+// Densities, element shapes (corner Jacobians), gauges inside the mesh.
+void check_model(const Model& model);
+
+// A name used in a file name or a CSV header: letters, digits, '_', '-', '.'.
+void check_name(const TomlReader& table, const std::string& key, const std::string& name);
+
+}  // namespace camouflet::case_detail

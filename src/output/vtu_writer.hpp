@@ -1,0 +1,38 @@
+#pragma once
+// Field snapshots for ParaView: VTK XML UnstructuredGrid files (ASCII data)
+// and the .pvd collection that indexes them by time.
+//   mesh:      quads (VTK_QUAD) or hexes (VTK_HEXAHEDRON); point data velocity,
+//              displacement, acceleration; cell data density, pressure,
+//              stress (xx yy zz xy yz zx, ParaView's symmetric-tensor order),
+//              plastic_strain, damage, material.
+//   particles: one VTK_VERTEX cell per particle, the same quantities as point
+//              data, plus smoothing_length and neighbour_count.
+// 2-D coordinates are written with z = 0 (axisymmetric: x = r, y = z).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "output/snapshot.hpp"
+
+namespace camouflet {
+
+void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& state);
+void write_particle_vtu(const std::filesystem::path& path, const FieldSnapshot& state);
+
+// The .pvd index: one DataSet line per file; part 0 = mesh, 1 = particles.
+class PvdIndex {
+ public:
+  void add(double time, int part, const std::string& file);
+  // Rewrites the whole index (atomically) so it always lists complete files.
+  void write(const std::filesystem::path& path) const;
+
+ private:
+  struct Entry {
+    double time;
+    int part;
+    std::string file;
+  };
+  std::vector<Entry> entries_;
+};
+
+}  // namespace camouflet

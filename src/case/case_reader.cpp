@@ -26,6 +26,7 @@ Model build(const toml::table& doc, const std::filesystem::path& file) {
   if (auto materials = root.table("materials")) case_detail::read_materials(*materials, model);
   case_detail::read_parts(root, model, file.parent_path());
   case_detail::read_bars(root, model);
+  if (auto sph = root.table("sph")) case_detail::read_sph(*sph, model);
   case_detail::read_boundaries(root, model);
   case_detail::read_gauges(root, model);
   case_detail::read_detonations(root, model);

@@ -117,8 +117,39 @@ void check_axisymmetric(const Model& model) {
 
 }  // namespace
 
+// Particles inside FEM elements would double the material there: without a
+// join or contact (coupling issue) that is refused. Only particles inside the
+// mesh's bounding box are located.
+static void check_particle_overlap(const Model& model) {
+  const FemMesh& mesh = model.mesh;
+  const ParticleSet& p = model.particles;
+  if (p.count() == 0 || mesh.element_count() == 0) return;
+  const auto dim = static_cast<std::size_t>(model.dimension());
+  std::array<double, 3> lo{}, hi{};
+  for (std::size_t k = 0; k < dim; ++k) lo[k] = hi[k] = mesh.coordinates[k];
+  for (std::size_t n = 0; n < mesh.node_count(); ++n)
+    for (std::size_t k = 0; k < dim; ++k) {
+      lo[k] = std::min(lo[k], mesh.coordinates[n * dim + k]);
+      hi[k] = std::max(hi[k], mesh.coordinates[n * dim + k]);
+    }
+  for (std::size_t i = 0; i < p.count(); ++i) {
+    const std::span<const double> x(&p.coordinates[i * dim], dim);
+    bool inside_box = true;
+    for (std::size_t k = 0; k < dim; ++k) inside_box = inside_box && x[k] > lo[k] && x[k] < hi[k];
+    if (!inside_box || !locate_point(mesh.dimension, mesh.coordinates, mesh.connectivity, x)) continue;
+    const Part& part = model.parts[static_cast<std::size_t>(p.particle_part[i])];
+    SourceLocation w = part.where;
+    w.key += ".fill";
+    throw InputError(w,
+                     fmt::format("particles of SPH part '{}' overlap the finite elements at ({}); no join or "
+                                 "contact between particles and elements is defined",
+                                 part.name, fmt::join(x.begin(), x.end(), ", ")));
+  }
+}
+
 void check_model(const Model& model) {
   check_densities(model);
+  check_particle_overlap(model);
   check_elements(model);
   check_axisymmetric(model);
   check_gauges(model);

@@ -7,6 +7,7 @@
 #include "case/sections.hpp"
 #include "mesh/block_generator.hpp"
 #include "mesh/gmsh_import.hpp"
+#include "mesh/particle_fill.hpp"
 
 namespace camouflet::case_detail {
 
@@ -68,6 +69,52 @@ void read_block(TomlReader& block, Model& model, const std::string& name, int pa
   }
 }
 
+// `fill = { shape = ..., spacing = ... }` of an SPH part (issue 3; docs/case-format.md).
+void read_fill(TomlReader& fill, Model& model, int part_index) {
+  const int dim = model.dimension();
+  ParticleFillSpec spec;
+  spec.part = part_index;
+  spec.where = fill.where();
+  const std::string shape = fill.choice("shape", {"box", "sphere", "cylinder", "polygon"}, "box");
+  auto& region = spec.region;
+  if (shape == "box") {
+    region.shape = ParticleRegion::Shape::box;
+    region.min = fill.vector("min", dim);
+    region.max = fill.vector("max", dim);
+    for (int i = 0; i < dim; ++i)
+      if (!(region.max[static_cast<std::size_t>(i)] > region.min[static_cast<std::size_t>(i)]))
+        fill.fail("max", fmt::format("the box is empty: max <= min along axis {}", "xyz"[i]));
+  } else if (shape == "sphere" || shape == "cylinder") {
+    region.shape = shape == "sphere" ? ParticleRegion::Shape::sphere : ParticleRegion::Shape::cylinder;
+    region.centre = fill.vector("centre", dim);
+    region.radius = fill.positive("radius");
+    if (shape == "cylinder") {
+      region.length = fill.positive("length");
+      if (dim == 3) region.axis = fill.vector("axis", dim, {0, 0, 1});
+    }
+  } else {
+    if (dim != 2) fill.fail("shape", "a polygon fills a 2-D region only");
+    region.shape = ParticleRegion::Shape::polygon;
+    const auto v = fill.numbers("vertices");
+    if (v.size() < 6 || v.size() % 2 != 0)
+      fill.fail("vertices", "a polygon needs at least 3 vertices as a flat list [x1, y1, x2, y2, ...]");
+    for (std::size_t k = 0; k < v.size(); k += 2) region.polygon.push_back({v[k], v[k + 1]});
+  }
+  spec.spacing = fill.positive("spacing");
+  if (fill.has("grading_point")) {
+    spec.graded = true;
+    spec.grading_point = fill.vector("grading_point", dim);
+    spec.grading_ratio = fill.number("grading_ratio");
+    if (!(spec.grading_ratio >= 1.0)) fill.fail("grading_ratio", "the grading ratio must be at least 1");
+    spec.max_spacing = fill.positive("max_spacing");
+    if (spec.max_spacing < spec.spacing)
+      fill.fail("max_spacing",
+                fmt::format("max_spacing {} is below spacing {}", spec.max_spacing, spec.spacing));
+  }
+  fill.finish();
+  fill_particles(model.particles, spec, model.run.mode);
+}
+
 }  // namespace
 
 void read_parts(TomlReader& root, Model& model, const std::filesystem::path& case_dir) {
@@ -85,10 +132,19 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     if (!seen.insert(part.name).second) p.fail("name", fmt::format("part '{}' is defined twice", part.name));
     part.material = find_material(model, p, p.string("material"));
     const std::string kind = p.choice("kind", {"fem", "sph"}, "fem");
-    if (kind == "sph") p.fail("kind", "SPH parts are not yet supported");
+    part.kind = kind == "sph" ? PartKind::sph : PartKind::fem;
     part.initial_velocity = p.vector("initial_velocity", dim, {0, 0, 0});
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);
+    if (part.kind == PartKind::sph) {
+      auto fill = p.table("fill");
+      if (!fill) p.fail("fill", "an SPH part needs `fill = { shape = ..., spacing = ... }`");
+      if (p.has("block") || p.has("gmsh"))
+        p.fail(p.has("block") ? "block" : "gmsh", "an SPH part is filled, not meshed");
+      read_fill(*fill, model, index);
+      p.finish();
+      continue;
+    }
 
     const bool has_block = p.has("block"), has_gmsh = p.has("gmsh");
     if (has_block == has_gmsh)

@@ -1,7 +1,9 @@
 // `camouflet run CASE [-o DIR] [--quiet] [--threads N]`
 #include <fmt/format.h>
 #include <omp.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -13,6 +15,17 @@
 namespace camouflet::app {
 
 namespace {
+
+// Ctrl-C or a kill: every gauge row and snapshot written so far is already
+// complete on disk (rows are flushed one by one, snapshots renamed into
+// place), so the process ends at once with the documented status 130.
+// Only async-signal-safe calls here.
+extern "C" void on_interrupt(int) {
+  static const char message[] = "\ncamouflet: interrupted; output written so far is complete\n";
+  [[maybe_unused]] const auto n = write(STDERR_FILENO, message, sizeof message - 1);
+  _exit(exit_interrupted);
+}
+
 struct RunArguments {
   std::string case_file;
   std::string output_dir;
@@ -31,6 +44,8 @@ void add_run_command(CLI::App& app, CommandResult& result) {
   cmd->callback([args, &result] {
     result.exit_code = run_guarded([&] {
       const Model model = read_case(args->case_file);
+      std::signal(SIGINT, on_interrupt);
+      std::signal(SIGTERM, on_interrupt);
       RunOptions options;
       options.output_dir = args->output_dir.empty() ? std::filesystem::path("results") /
                                                           std::filesystem::path(args->case_file).stem()

@@ -95,6 +95,7 @@ double BoundaryConditions<D>::scale(int history, double time) const {
 
 template <int D>
 void BoundaryConditions<D>::add_loads(const double* x, double time, double* f) {
+  load_forces_.swap(load_forces_previous_);
   load_forces_.clear();
   for (const auto& load : loads_) {
     const double p = load.pressure * scale(load.history, time);
@@ -135,35 +136,46 @@ void BoundaryConditions<D>::add_loads(const double* x, double time, double* f) {
 }
 
 template <int D>
-double BoundaryConditions<D>::load_work(const double* v_old, const double* v_new, double dt) const {
-  double w = 0.0;
-  for (const auto& lf : load_forces_)
-    for (int i = 0; i < D; ++i)
-      w += lf.force[static_cast<std::size_t>(i)] * 0.5 * (v_old[lf.node * D + i] + v_new[lf.node * D + i]) *
-           dt;
-  return w;
+double BoundaryConditions<D>::load_work(const double* v_old, double dt_old) const {
+  double work = 0.0;
+  for (std::size_t j = 0; j < load_forces_.size(); ++j) {
+    const LoadForce& now = load_forces_[j];
+    const bool has_previous = j < load_forces_previous_.size();
+    for (int i = 0; i < D; ++i) {
+      const double f_prev = has_previous ? load_forces_previous_[j].force[static_cast<std::size_t>(i)] : 0.0;
+      work += 0.5 * (f_prev + now.force[static_cast<std::size_t>(i)]) * v_old[now.node * D + i] * dt_old;
+    }
+  }
+  return work;
 }
 
 template <int D>
-double BoundaryConditions<D>::constrain(double* v, const double* v_old, const double* node_mass,
-                                        double time) const {
+double BoundaryConditions<D>::constrain(double* v, const double* v_old, const double* node_mass, double time,
+                                        double dt_old, double dt_mean) {
+  const std::size_t n_reactions = components_.size() + planes_.size() * D;
+  if (reaction_previous_.size() != n_reactions) reaction_previous_.assign(n_reactions, 0.0);
   double work = 0.0;
+  std::size_t r = components_.size();
   for (const auto& p : planes_) {
     double vn = 0.0;
     for (int i = 0; i < D; ++i) vn += v[p.node * D + i] * p.normal[static_cast<std::size_t>(i)];
-    for (int i = 0; i < D; ++i) {
+    for (int i = 0; i < D; ++i, ++r) {
       const std::int64_t k = p.node * D + i;
       const double dv = -vn * p.normal[static_cast<std::size_t>(i)];
       v[k] += dv;
-      work += node_mass[p.node] * dv * 0.5 * (v_old[k] + v[k]);
+      const double reaction = dt_mean > 0.0 ? node_mass[p.node] * dv / dt_mean : 0.0;
+      work += 0.5 * (reaction_previous_[r] + reaction) * v_old[k] * dt_old;
+      reaction_previous_[r] = reaction;
     }
   }
+  r = 0;
   for (const auto& c : components_) {
     const std::int64_t k = c.node * D + c.component;
     const double target = c.value * scale(c.history, time);
-    const double dv = target - v[k];
+    const double reaction = dt_mean > 0.0 ? node_mass[c.node] * (target - v[k]) / dt_mean : 0.0;
     v[k] = target;
-    work += node_mass[c.node] * dv * 0.5 * (v_old[k] + target);
+    work += 0.5 * (reaction_previous_[r] + reaction) * v_old[k] * dt_old;
+    reaction_previous_[r++] = reaction;
   }
   return work;
 }

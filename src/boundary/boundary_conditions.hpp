@@ -22,14 +22,16 @@ class BoundaryConditions {
 
   // f (n*D) += pressure loads at time t on the current geometry x.
   void add_loads(const double* x, double time, double* f);
-  // Work of the loads of the last add_loads over a step in which the
-  // velocity went from v_old to v_new, with impulse dt (J).
-  double load_work(const double* v_old, const double* v_new, double dt) const;
+  // Work of the loads from t_(n-1) to t_n (J): the trapezoid of the load
+  // forces of the last two add_loads against v(n-1/2) = v_old over dt_old,
+  // the centring of the internal energy (solver.cpp, account_energy).
+  double load_work(const double* v_old, double dt_old) const;
 
-  // Imposes the constraints on v (n*D) for the half step centred on `time`.
-  // Returns the work of the reaction impulses m (v_constrained - v_free)
-  // against the mean velocity (v_old + v) / 2 (J).
-  double constrain(double* v, const double* v_old, const double* node_mass, double time) const;
+  // Imposes the constraints on v (n*D) for the half step centred on `time`;
+  // the reaction force is m (v_constrained - v_free) / dt_mean. Returns the
+  // work of the reactions from t_(n-1) to t_n, centred like load_work (J).
+  double constrain(double* v, const double* v_old, const double* node_mass, double time, double dt_old,
+                   double dt_mean);
 
   // The constraints alone (no work): used for the initial velocities.
   void constrain(double* v, double time) const;
@@ -60,7 +62,9 @@ class BoundaryConditions {
   std::vector<Plane> planes_;
   std::vector<Load> loads_;
   std::vector<TimeHistory> histories_;
-  std::vector<LoadForce> load_forces_;  // of the latest add_loads
+  std::vector<LoadForce> load_forces_;           // N, of the latest add_loads (t_n)
+  std::vector<LoadForce> load_forces_previous_;  // N, of the one before (t_(n-1))
+  std::vector<double> reaction_previous_;        // N, per component, then per plane and direction
   bool axisymmetric_ = false;
 };
 

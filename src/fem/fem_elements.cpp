@@ -1,13 +1,13 @@
 #include "fem/fem_elements.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <cmath>
 #include <limits>
 #include <numbers>
 
 #include "core/error.hpp"
-#include "fem/colouring.hpp"
 #include "fem/parallel.hpp"
 #include "fem/shape.hpp"
 
@@ -109,7 +109,7 @@ FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::v
     const double l = Shape<D>::length(x, measure);
     length[e] = l;
   }
-  colours = colour_elements(connectivity, nodes, coordinates.size() / D);
+  node_count_ = coordinates.size() / D;
 }
 
 template <int D>
@@ -128,78 +128,121 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
   const bool axi = axisymmetric_;
   const bool viscous_hg = hg.form == HourglassForm::viscous && hg.coefficient > 0.0;
   const bool stiff_hg = hg.form == HourglassForm::stiffness && hg.coefficient > 0.0;
-  double stored = 0.0;
-  for (const auto& colour : colours) {
-    const std::int64_t count = static_cast<std::int64_t>(colour.size());
-#pragma omp parallel for schedule(static) reduction(+ : stored) if (count > parallel_threshold)
-    for (std::int64_t k = 0; k < count; ++k) {
-      const std::size_t e = static_cast<std::size_t>(colour[static_cast<std::size_t>(k)]);
-      const std::int64_t* conn = &connectivity[e * N];
-      NodeValues<D> xe, b, fe;
-      gather<D>(x, conn, xe);
-      const double measure = Shape<D>::gradients(xe, b);
-      double r_bar = 0.0;
-      const double w = ring_weight<D>(axi, xe, r_bar);
-      const double vol = measure * w;
 
-      // Stress divergence: f_ia = -V sigma_ij b_ja (FB 1981, eq. 17), with q as a pressure.
-      SymTensor s = stress[e];
-      const double q = viscosity[e];
-      s.xx -= q;
-      s.yy -= q;
-      s.zz -= q;
-      double sig[D][D];
-      stress_rows<D>(s, sig);
+  // One element: its forces scattered into f_out (and the hourglass part
+  // into fh_out); returns the stiffness-form hourglass energy it holds.
+  const auto element = [&](std::size_t e, double* f_out, double* fh_out) {
+    double stored = 0.0;
+    const std::int64_t* conn = &connectivity[e * N];
+    NodeValues<D> xe, b, fe;
+    gather<D>(x, conn, xe);
+    const double measure = Shape<D>::gradients(xe, b);
+    double r_bar = 0.0;
+    const double w = ring_weight<D>(axi, xe, r_bar);
+    const double vol = measure * w;
+
+    // Stress divergence: f_ia = -V sigma_ij b_ja (FB 1981, eq. 17), with q as a pressure.
+    SymTensor s = stress[e];
+    const double q = viscosity[e];
+    s.xx -= q;
+    s.yy -= q;
+    s.zz -= q;
+    double sig[D][D];
+    stress_rows<D>(s, sig);
+    for (int a = 0; a < N; ++a)
+      for (int i = 0; i < D; ++i) {
+        double t = 0.0;
+        for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
+        fe[i][a] = -vol * t;
+      }
+    if constexpr (D == 2) {
+      // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
+      // v_r at the centre = mean of the nodal v_r.
+      if (axi)
+        for (int a = 0; a < N; ++a) fe[0][a] -= vol * s.zz / (N * r_bar);
+    }
+
+    if (viscous_hg || stiff_hg) {
+      NodeValues<D> ve, fh;
+      gather<D>(v, conn, ve);
+      double g[Shape<D>::modes][N];
+      hourglass_shapes<D>(xe, b, g);
+      const double rho = density[e], c = wave_speed[e];
+      const double l = length[e];  // V / largest face, from the last kinematics (same geometry)
+      // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
+      // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
+      const double coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
+                                     : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
+      double* hd = &hourglass_displacement[e * modes * D];
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < D; ++i) fh[i][a] = 0.0;
+      for (int m = 0; m < Shape<D>::modes; ++m)
+        for (int i = 0; i < D; ++i) {
+          double rate = 0.0;
+          for (int a = 0; a < N; ++a) rate += g[m][a] * ve[i][a];
+          double amplitude;
+          if (viscous_hg) {
+            amplitude = rate;
+          } else {
+            hd[m * D + i] += rate * dt_previous;
+            amplitude = hd[m * D + i];
+            stored += 0.5 * coef * amplitude * amplitude;
+          }
+          for (int a = 0; a < N; ++a) fh[i][a] -= coef * amplitude * g[m][a];
+        }
       for (int a = 0; a < N; ++a)
         for (int i = 0; i < D; ++i) {
-          double t = 0.0;
-          for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
-          fe[i][a] = -vol * t;
+          fe[i][a] += fh[i][a];
+          if (fh_out) fh_out[conn[a] * D + i] += fh[i][a];
         }
-      if constexpr (D == 2) {
-        // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
-        // v_r at the centre = mean of the nodal v_r.
-        if (axi)
-          for (int a = 0; a < N; ++a) fe[0][a] -= vol * s.zz / (N * r_bar);
-      }
+    }
 
-      if (viscous_hg || stiff_hg) {
-        NodeValues<D> ve, fh;
-        gather<D>(v, conn, ve);
-        double g[Shape<D>::modes][N];
-        hourglass_shapes<D>(xe, b, g);
-        const double rho = density[e], c = wave_speed[e];
-        const double l = D == 2 ? std::sqrt(measure) : std::cbrt(measure);
-        // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
-        // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
-        const double coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
-                                       : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
-        double* hd = &hourglass_displacement[e * modes * D];
-        for (int a = 0; a < N; ++a)
-          for (int i = 0; i < D; ++i) fh[i][a] = 0.0;
-        for (int m = 0; m < Shape<D>::modes; ++m)
-          for (int i = 0; i < D; ++i) {
-            double rate = 0.0;
-            for (int a = 0; a < N; ++a) rate += g[m][a] * ve[i][a];
-            double amplitude;
-            if (viscous_hg) {
-              amplitude = rate;
-            } else {
-              hd[m * D + i] += rate * dt_previous;
-              amplitude = hd[m * D + i];
-              stored += 0.5 * coef * amplitude * amplitude;
-            }
-            for (int a = 0; a < N; ++a) fh[i][a] -= coef * amplitude * g[m][a];
-          }
-        for (int a = 0; a < N; ++a)
-          for (int i = 0; i < D; ++i) {
-            fe[i][a] += fh[i][a];
-            if (f_hourglass) f_hourglass[conn[a] * D + i] += fh[i][a];
-          }
-      }
+    for (int a = 0; a < N; ++a)
+      for (int i = 0; i < D; ++i) f_out[conn[a] * D + i] += fe[i][a];
+    return stored;
+  };
 
-      for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) f[conn[a] * D + i] += fe[i][a];
+  const std::int64_t ne = static_cast<std::int64_t>(size());
+  const int team = ne > parallel_threshold ? omp_get_max_threads() : 1;
+  double stored = 0.0;
+  if (team == 1) {
+    for (std::int64_t e = 0; e < ne; ++e) stored += element(static_cast<std::size_t>(e), f, f_hourglass);
+    return stored;
+  }
+  // Race-free assembly: thread 0 scatters into f, thread t > 0 into its own
+  // zeroed buffer; the buffers are then added in thread order (deterministic
+  // for a given thread count) and zeroed again for the next call.
+  const std::size_t values = node_count_ * D;
+  if (thread_force_.size() < static_cast<std::size_t>(team - 1)) {
+    thread_force_.resize(static_cast<std::size_t>(team - 1));
+    thread_hourglass_force_.resize(static_cast<std::size_t>(team - 1));
+  }
+  for (int t = 0; t < team - 1; ++t) {
+    thread_force_[static_cast<std::size_t>(t)].resize(values, 0.0);
+    if (f_hourglass) thread_hourglass_force_[static_cast<std::size_t>(t)].resize(values, 0.0);
+  }
+  const std::int64_t nv = static_cast<std::int64_t>(values);
+#pragma omp parallel num_threads(team) reduction(+ : stored)
+  {
+    const int t = omp_get_thread_num();
+    double* f_out = t == 0 ? f : thread_force_[static_cast<std::size_t>(t - 1)].data();
+    double* fh_out = f_hourglass == nullptr ? nullptr
+                     : t == 0               ? f_hourglass
+                                            : thread_hourglass_force_[static_cast<std::size_t>(t - 1)].data();
+#pragma omp for schedule(static)
+    for (std::int64_t e = 0; e < ne; ++e) stored += element(static_cast<std::size_t>(e), f_out, fh_out);
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < nv; ++k) {
+      for (int s = 0; s < team - 1; ++s) {
+        double& buffer = thread_force_[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)];
+        f[k] += buffer;
+        buffer = 0.0;
+        if (f_hourglass) {
+          double& hb = thread_hourglass_force_[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)];
+          f_hourglass[k] += hb;
+          hb = 0.0;
+        }
+      }
     }
   }
   return stored;
@@ -260,7 +303,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
     const Spin spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
 
     // New volume and density at t_{n+1}.
-    const double measure = Shape<D>::gradients(xe, b);
+    const double measure = Shape<D>::measure(xe);
     double r_bar = 0.0;
     const double w = ring_weight<D>(axi, xe, r_bar);
     const double vol = measure * w;

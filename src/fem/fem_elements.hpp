@@ -78,10 +78,12 @@ class FemElements {
   std::vector<double> length;                  // m, characteristic length for dt and q
   std::vector<double> speed;                   // m/s, largest node speed of the element
   std::vector<double> hourglass_displacement;  // m, e * modes * D: stiffness-form generalised modes
-  std::vector<std::vector<std::int64_t>> colours;
 
  private:
   bool axisymmetric_ = false;
+  std::size_t node_count_ = 0;
+  // Per-thread force buffers of the threaded assembly (threads 1..T-1), kept zeroed.
+  std::vector<std::vector<double>> thread_force_, thread_hourglass_force_;
 };
 
 extern template class FemElements<2>;

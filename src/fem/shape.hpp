@@ -6,6 +6,7 @@
 // Coordinates come as x[i][a]: component i of node a.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace camouflet {
 
@@ -37,6 +38,11 @@ struct Shape<2> {
     return area;
   }
 
+  // Area (m^2) alone.
+  static double measure(const double (&x)[2][4]) {
+    return 0.5 * ((x[0][2] - x[0][0]) * (x[1][3] - x[1][1]) - (x[0][3] - x[0][1]) * (x[1][2] - x[1][0]));
+  }
+
   // Area / longest side: the shortest crossing distance of the element.
   static double length(const double (&x)[2][4], double area) {
     double longest = 0.0;
@@ -60,9 +66,17 @@ struct Shape<3> {
                                         {1, -1, 1, -1, 1, -1, 1, -1},
                                         {-1, 1, -1, 1, 1, -1, 1, -1}};
 
-  // One row of FB 1981 eq. (79): dV/dx_a for node a = 0 from the other two
-  // coordinate components (y, z) -> x, via the node permutation of each node.
-  static double volume_derivative(const double* y, const double* z, const int (&p)[8]) {
+  // Node a's view of the element: the node order that maps node 0's formula onto node a.
+  static constexpr int permutation[8][8] = {
+      {0, 1, 2, 3, 4, 5, 6, 7}, {1, 2, 3, 0, 5, 6, 7, 4}, {2, 3, 0, 1, 6, 7, 4, 5}, {3, 0, 1, 2, 7, 4, 5, 6},
+      {4, 7, 6, 5, 0, 3, 2, 1}, {5, 4, 7, 6, 1, 0, 3, 2}, {6, 5, 4, 7, 2, 1, 0, 3}, {7, 6, 5, 4, 3, 2, 1, 0}};
+
+  // One row of FB 1981 eq. (79): dV/dx_a for node A from the other two
+  // coordinate components (y, z) -> x, via node A's permutation. A is a
+  // template argument so that every index folds to a constant.
+  template <int A>
+  static double volume_derivative(const double* y, const double* z) {
+    constexpr const int* p = permutation[A];
     const auto Y = [&](int k) { return y[p[k - 1]]; };
     const auto Z = [&](int k) { return z[p[k - 1]]; };
     return (Y(2) * ((Z(6) - Z(3)) - (Z(4) - Z(5))) + Y(3) * (Z(2) - Z(4)) +
@@ -71,19 +85,23 @@ struct Shape<3> {
            12.0;
   }
 
+  template <std::size_t... A>
+  static void volume_derivatives(const double (&x)[3][8], double (&b)[3][8], std::index_sequence<A...>) {
+    ((b[0][A] = volume_derivative<A>(x[1], x[2]), b[1][A] = volume_derivative<A>(x[2], x[0]),
+      b[2][A] = volume_derivative<A>(x[0], x[1])),
+     ...);
+  }
+
+  template <std::size_t... A>
+  static double volume_only(const double (&x)[3][8], std::index_sequence<A...>) {
+    return ((x[0][A] * volume_derivative<A>(x[1], x[2])) + ...);
+  }
+
   // b[i][a] = (1/V) dV/dx_ia, the uniform-strain gradient vectors that make
   // the one-point hexahedron pass the patch test (FB 1981, eqs. 16, 79);
   // returns the exact trilinear volume (m^3).
   static double gradients(const double (&x)[3][8], double (&b)[3][8]) {
-    static constexpr int perm[8][8] = {{0, 1, 2, 3, 4, 5, 6, 7}, {1, 2, 3, 0, 5, 6, 7, 4},
-                                       {2, 3, 0, 1, 6, 7, 4, 5}, {3, 0, 1, 2, 7, 4, 5, 6},
-                                       {4, 7, 6, 5, 0, 3, 2, 1}, {5, 4, 7, 6, 1, 0, 3, 2},
-                                       {6, 5, 4, 7, 2, 1, 0, 3}, {7, 6, 5, 4, 3, 2, 1, 0}};
-    for (int a = 0; a < 8; ++a) {
-      b[0][a] = volume_derivative(x[1], x[2], perm[a]);
-      b[1][a] = volume_derivative(x[2], x[0], perm[a]);
-      b[2][a] = volume_derivative(x[0], x[1], perm[a]);
-    }
+    volume_derivatives(x, b, std::make_index_sequence<8>{});
     double volume = 0.0;
     for (int a = 0; a < 8; ++a) volume += x[0][a] * b[0][a];
     const double s = 1.0 / volume;
@@ -91,6 +109,9 @@ struct Shape<3> {
       for (int a = 0; a < 8; ++a) b[i][a] *= s;
     return volume;
   }
+
+  // Exact volume (m^3) alone: sum_a x_a dV/dx_a, a third of the work of gradients().
+  static double measure(const double (&x)[3][8]) { return volume_only(x, std::make_index_sequence<8>{}); }
 
   // Volume / largest face area: the shortest crossing distance of the element.
   static double length(const double (&x)[3][8], double volume) {

@@ -91,8 +91,10 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   hourglass_ = {model.run.hourglass, model.run.hourglass_coefficient};
   // The viscous form's work is charged from its nodal forces; the stiffness
   // form holds its energy as a state (1/2 k q^2), like the internal energy.
-  if (hourglass_.form == HourglassForm::viscous && hourglass_.coefficient > 0.0)
+  if (hourglass_.form == HourglassForm::viscous && hourglass_.coefficient > 0.0) {
     hourglass_force_.assign(nn * D, 0.0);
+    hourglass_force_previous_.assign(nn * D, 0.0);
+  }
   viscosity_ = {model.run.viscosity_quadratic, model.run.viscosity_linear};
   boundaries_ = BoundaryConditions<D>(model);
   boundaries_.constrain(velocity_.data(), 0.0);
@@ -158,6 +160,7 @@ void Solver<D>::add_forces() {
   boundaries_.add_loads(position_.data(), time_, force_.data());
   double* f_hourglass = nullptr;
   if (!hourglass_force_.empty()) {
+    hourglass_force_.swap(hourglass_force_previous_);
     std::fill(hourglass_force_.begin(), hourglass_force_.end(), 0.0);
     f_hourglass = hourglass_force_.data();
   }
@@ -188,34 +191,40 @@ template <int D>
 void Solver<D>::constrain_velocities() {
   const double dt_mean = 0.5 * (dt_ + dt_next_);
   const double reaction_work = boundaries_.constrain(velocity_.data(), velocity_old_.data(),
-                                                     node_mass_.data(), time_ + 0.5 * dt_next_);
-  energy_.boundary_work +=
-      reaction_work + boundaries_.load_work(velocity_old_.data(), velocity_.data(), dt_mean);
+                                                     node_mass_.data(), time_ + 0.5 * dt_next_, dt_, dt_mean);
+  energy_.boundary_work += reaction_work + boundaries_.load_work(velocity_old_.data(), dt_);
 }
 
 template <int D>
 void Solver<D>::account_energy() {
-  // Time-centred kinetic energy at t_n, (1/2) m v(n-1/2) . v(n+1/2): with the
-  // internal energy at t_n it is what the central difference conserves. The
-  // hourglass forces at t_n work against the mean velocity over the impulse.
+  // Kinetic energy at t_n in the form the central difference conserves:
+  // (1/2) m (v_n^2 - a^2 dt-^2 / 4) with v_n = v(n-1/2) + a dt- / 2 and a the
+  // applied (constrained) acceleration; for equal steps it is (1/2) m
+  // v(n-1/2) . v(n+1/2), and a short next step (landing on the end time)
+  // does not disturb it. The
+  // viscous hourglass work from t_(n-1) to t_n is the trapezoid of its forces
+  // against v(n-1/2), the same centring as the internal energy's.
   const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
   const bool hourglass = !hourglass_force_.empty();
+  const double dt_minus = dt_, dt_mean = 0.5 * (dt_ + dt_next_);
   double kinetic = 0.0, hourglass_power = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) if (nn > parallel_threshold)
   for (std::int64_t n = 0; n < nn; ++n) {
     double vv = 0.0, fv = 0.0;
     for (int i = 0; i < D; ++i) {
       const std::size_t k = static_cast<std::size_t>(n * D + i);
-      vv += velocity_old_[k] * velocity_[k];
-      if (hourglass) fv += hourglass_force_[k] * (velocity_old_[k] + velocity_[k]);
+      const double a = (velocity_[k] - velocity_old_[k]) / dt_mean;
+      const double v_n = velocity_old_[k] + 0.5 * a * dt_minus;
+      vv += v_n * v_n - 0.25 * a * a * dt_minus * dt_minus;
+      if (hourglass) fv += 0.5 * (hourglass_force_[k] + hourglass_force_previous_[k]) * velocity_old_[k];
     }
     kinetic += 0.5 * node_mass_[static_cast<std::size_t>(n)] * vv;
-    hourglass_power -= 0.5 * fv;
+    hourglass_power -= fv;
   }
   EnergyBalance& e = energy_;
   e.kinetic = kinetic;
   e.internal = internal_energy_;
-  hourglass_dissipated_ += hourglass_power * 0.5 * (dt_ + dt_next_);
+  hourglass_dissipated_ += hourglass_power * dt_minus;
   e.hourglass = hourglass_dissipated_ + hourglass_stored_;
   const double total = e.kinetic + e.internal + e.hourglass;
   const double scale = std::max(e.initial_total + std::abs(e.boundary_work), std::abs(total));

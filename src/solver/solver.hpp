@@ -71,8 +71,9 @@ class Solver {
 
   // Nodes (SoA, n * D each).
   std::vector<double> position_, velocity_, velocity_old_, acceleration_, force_, displacement_;
-  std::vector<double> hourglass_force_;  // N, the hourglass part of force_ (empty without control)
-  std::vector<double> node_mass_;        // kg (plane strain: per metre of depth)
+  std::vector<double> hourglass_force_;           // N, the viscous hourglass part of force_ at t_n
+  std::vector<double> hourglass_force_previous_;  // N, the same at t_(n-1) (empty without viscous control)
+  std::vector<double> node_mass_;                 // kg (plane strain: per metre of depth)
 
   FemElements<D> elements_;
   std::vector<MaterialPoints> batches_;  // one per Model::materials entry

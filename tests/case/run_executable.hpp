@@ -13,8 +13,9 @@ struct Completed {
   std::string output;
 };
 
-inline Completed run_camouflet(const std::string& arguments) {
-  const std::string command = std::string("'") + CAMOUFLET_EXECUTABLE + "' " + arguments + " 2>&1";
+// Any shell command line, output captured.
+inline Completed run_camouflet_raw(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   Completed r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -24,6 +25,10 @@ inline Completed run_camouflet(const std::string& arguments) {
   const int raw = pclose(pipe);
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return r;
+}
+
+inline Completed run_camouflet(const std::string& arguments) {
+  return run_camouflet_raw(std::string("'") + CAMOUFLET_EXECUTABLE + "' " + arguments);
 }
 
 }  // namespace camouflet::test

@@ -121,3 +121,37 @@ TEST(EndToEnd, UnwritableOutputExitsThree) {
 
 }  // namespace
 }  // namespace camouflet
+
+namespace camouflet {
+namespace {
+
+// Exit code 130: an interrupted run ends at once, keeping complete CSV rows.
+TEST(EndToEnd, InterruptExits130WithCompleteRows) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output";
+  fs::create_directories(dir);
+  std::string text = slurp(fs::path(CAMOUFLET_SOURCE_DIR) / "cases/examples/elastic_column.toml");
+  text.replace(text.find("end_time = 0.012"), 16, "end_time = 100.0");  // far longer than the test waits
+  const fs::path case_file = dir / "interrupted.toml";
+  std::ofstream(case_file) << text;
+  const fs::path out = dir / "interrupted";
+  fs::remove_all(out);
+  const auto r = test::run_camouflet_raw("timeout --preserve-status -s INT 2 '" +
+                                         std::string(CAMOUFLET_EXECUTABLE) + "' run --quiet --threads 1 '" +
+                                         case_file.string() + "' -o '" + out.string() + "'");
+  EXPECT_EQ(r.status, 130) << r.output;
+  EXPECT_NE(r.output.find("interrupted"), std::string::npos) << r.output;
+  std::ifstream csv(out / "axis.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  const auto columns = std::count(header.begin(), header.end(), ',');
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), columns) << "row " << rows;
+  }
+  EXPECT_GT(rows, 1);
+}
+
+}  // namespace
+}  // namespace camouflet

@@ -11,7 +11,7 @@
 //                                the points is e = e0 / rho0 (J/kg), so that
 //                                the JWL term w E / V becomes w rho e
 //   detonation_velocity  m/s     optional, default: the computed CJ velocity
-//   burn_width_factor    -       n_burn of the burn ramp, default 2
+//   burn_width_factor    -       n_burn of the burn ramp, default 3
 //
 // Unburnt explosive carries no pressure: p = F p_JWL(rho, e) with the burn
 // fraction F (LS-DYNA *MAT_HIGH_EXPLOSIVE_BURN does the same). It carries its

@@ -28,14 +28,13 @@ MaterialPreset tnt_wang2005() {
 }
 
 MaterialPreset steel_1006_wang2005() {
-  // Table 4 (Autodyn STEEL 1006). The bulk response p = K mu (K = 200 GPa) is
-  // given as a polynomial EOS with only A1 = K, which is that linear law.
+  // Table 4 (Autodyn STEEL 1006): linear bulk response p = K (rho / rho0 - 1).
   const std::string name = "steel_1006_wang2005";
   MaterialPreset m;
   m.description = "Steel 1006, Johnson-Cook (Wang et al. 2005, Table 4; Autodyn STEEL 1006)";
-  m.eos.set_string("type", "polynomial", preset_location(name, "eos.type"));
+  m.eos.set_string("type", "linear", preset_location(name, "eos.type"));
   m.eos.set_number("density", 7896.0, preset_location(name, "eos.density"));
-  m.eos.set_number("a1", 200.0e9, preset_location(name, "eos.a1"));
+  m.eos.set_number("bulk_modulus", 200.0e9, preset_location(name, "eos.bulk_modulus"));
   auto s = [&](const std::string& key, double v) {
     m.strength.set_number(key, v, preset_location(name, "strength." + key));
   };

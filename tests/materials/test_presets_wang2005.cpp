@@ -42,6 +42,7 @@ TEST(PresetsWang2005, BuildWithTheirTables) {
   auto steel = preset("steel_1006_wang2005");
   ASSERT_NE(steel->strength(), nullptr);
   EXPECT_EQ(steel->strength()->type(), "johnson_cook");
+  EXPECT_EQ(steel->eos().type(), "linear");
   MaterialPoints pts;
   steel->setup(pts, 1);
   EXPECT_DOUBLE_EQ(pts.shear_modulus[0], 81.8e9);

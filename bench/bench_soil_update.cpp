@@ -1,9 +1,8 @@
 // Cost of one constitutive update per point (ns/point) for the three-phase
-// soil (EOS root solve + Drucker-Prager + bond damage) beside an elastic
-// reference (linear polynomial EOS p = K mu + a Hookean deviator defined here,
-// since the project's `elastic` strength lives on another branch).
+// soil (EOS root solve + Drucker-Prager + bond damage) beside the elastic
+// reference (`linear` EOS + `elastic` strength), through Material::update.
 //
-//   bench_soil_update --benchmark_counters_tabular=true
+//   OMP_NUM_THREADS=1 bench_soil_update --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -17,35 +16,19 @@ namespace {
 
 using namespace camouflet;
 
-// Hooke's law for the deviator: the cheapest strength model, as the baseline.
-class HookeStrength final : public StrengthModel {
- public:
-  explicit HookeStrength(double g) : g_(g) {}
-  std::string type() const override { return "hooke (benchmark baseline)"; }
-  void initialise(MaterialPoints& pts) const override {
-    for (auto& g : pts.shear_modulus) g = g_;
-  }
-  void update(MaterialPoints& pts, const MaterialContext& ctx) const override {
-    const std::size_t n = pts.size();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) pts.deviator[i] += deviator(pts.strain_rate[i]) * (2.0 * g_ * ctx.dt);
-  }
-
- private:
-  double g_;
-};
-
 std::shared_ptr<const Material> soil() {
   const MaterialPreset p = sandy_clay_wang2005();
   return make_material("soil", "", {}, p.eos, p.strength, p.damage);
 }
 
 std::shared_ptr<const Material> elastic() {
-  Parameters eos;
-  eos.set_string("type", "polynomial");
+  Parameters eos, strength;
+  eos.set_string("type", "linear");
   eos.set_number("density", 1917.0);
-  eos.set_number("a1", 5.5e9);  // the soil's unloading bulk modulus
-  return std::make_shared<const Material>("elastic", make_eos(eos), std::make_shared<HookeStrength>(55e6));
+  eos.set_number("bulk_modulus", 5.5e9);  // the soil's unloading bulk modulus
+  strength.set_string("type", "elastic");
+  strength.set_number("shear_modulus", 55e6);
+  return make_material("elastic", "", {}, eos, strength, Parameters{});
 }
 
 // Every point alternates compression and release with its own amplitude, so

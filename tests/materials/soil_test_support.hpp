@@ -55,6 +55,7 @@ inline void single_point_threads() {
 class PointDriver {
  public:
   explicit PointDriver(std::shared_ptr<const Material> m) : material_(std::move(m)) {
+    single_point_threads();
     material_->setup(pts, 1);
   }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/parameters.hpp"
 #include "materials/material.hpp"
 
 namespace camouflet {
@@ -137,6 +138,7 @@ struct Model {
   std::vector<Part> parts;
   FemMesh mesh;
   ParticleSet particles;
+  Parameters sph;  // numerical SPH settings (the case's [sph] block), read by sph::read_sph_options
   std::vector<BoundaryCondition> boundaries;
   std::vector<GaugeGroup> gauges;
   std::vector<DetonationPoint> detonations;

@@ -28,10 +28,11 @@ std::array<double, 3> centre(const std::vector<double>& x, const std::int64_t* c
 template <int D>
 Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   const FemMesh& mesh = model.mesh;
-  if (mesh.dimension != D || model.dimension() != D)
+  const bool has_mesh = mesh.node_count() > 0;
+  if ((has_mesh && mesh.dimension != D) || model.dimension() != D)
     throw InputError(model.run.where, fmt::format("mesh dimension {} does not match geometry mode '{}'",
                                                   mesh.dimension, to_string(model.run.mode)));
-  if (mesh.nodes_per_element != FemElements<D>::nodes)
+  if (has_mesh && mesh.nodes_per_element != FemElements<D>::nodes)
     throw InputError(model.run.where, fmt::format("{}-D meshes need {}-node elements, got {}", D,
                                                   FemElements<D>::nodes, mesh.nodes_per_element));
   const std::size_t nn = mesh.node_count();
@@ -99,6 +100,16 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   boundaries_ = BoundaryConditions<D>(model);
   boundaries_.constrain(velocity_.data(), 0.0);
 
+  // SPH particles: same materials, own batches (sph/sph_system.hpp); symmetry
+  // boundaries on axis-aligned planes reflect particles too.
+  if (model.particles.count() > 0) {
+    Parameters sph_block = model.sph;
+    const sph::SphOptions options = sph::read_sph_options(sph_block);
+    sph_block.finish();
+    particles_ = std::make_unique<sph::SphSystem<D>>(model, options, particle_planes());
+    particles_->compute_accelerations();
+  }
+
   gather_element_state();
   choose_time_step();
   if (model.run.initial_dt > 0.0) {
@@ -112,9 +123,30 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     for (int i = 0; i < D; ++i)
       kinetic += 0.5 * node_mass_[n] * velocity_[n * D + static_cast<std::size_t>(i)] *
                  velocity_[n * D + static_cast<std::size_t>(i)];
+  if (particles_) kinetic += particles_->kinetic_energy();
   energy_.kinetic = kinetic;
   energy_.internal = internal_energy_;
   energy_.initial_total = kinetic + internal_energy_;
+}
+
+template <int D>
+std::vector<sph::MirrorPlane> Solver<D>::particle_planes() const {
+  // A symmetry boundary whose normal is a coordinate axis and whose node set
+  // lies on one plane is also a mirror plane for particles. (The axis of an
+  // axisymmetric model is added by SphSystem itself.)
+  std::vector<sph::MirrorPlane> planes;
+  for (const BoundaryCondition& bc : model_.boundaries) {
+    if (bc.kind != BoundaryKind::symmetry) continue;
+    int axis = -1;
+    for (int i = 0; i < D; ++i)
+      if (std::abs(bc.normal[static_cast<std::size_t>(i)]) > 0.999) axis = i;
+    const auto set = model_.mesh.node_sets.find(bc.set);
+    if (axis < 0 || set == model_.mesh.node_sets.end() || set->second.empty()) continue;
+    const double position = model_.mesh.coordinates[static_cast<std::size_t>(set->second.front() * D + axis)];
+    if (mode_ == GeometryMode::axisymmetric && axis == 0 && std::abs(position) < 1e-12) continue;
+    planes.push_back({axis, position, sph::PlaneKind::symmetry});
+  }
+  return planes;
 }
 
 template <int D>
@@ -166,6 +198,7 @@ void Solver<D>::add_forces() {
   }
   hourglass_stored_ = elements_.add_internal_forces(position_.data(), velocity_.data(), force_.data(),
                                                     f_hourglass, hourglass_, dt_);
+  if (particles_) particles_->compute_accelerations();  // SPH sums at t_n
 }
 
 template <int D>
@@ -185,6 +218,7 @@ void Solver<D>::advance_velocities() {
       velocity_[k] += a * dt_mean;
     }
   }
+  if (particles_) particles_->kick(dt_mean);
 }
 
 template <int D>
@@ -221,6 +255,7 @@ void Solver<D>::account_energy() {
     kinetic += 0.5 * node_mass_[static_cast<std::size_t>(n)] * vv;
     hourglass_power -= fv;
   }
+  if (particles_) kinetic += particles_->centred_kinetic_energy();
   EnergyBalance& e = energy_;
   e.kinetic = kinetic;
   e.internal = internal_energy_;
@@ -234,6 +269,7 @@ void Solver<D>::account_energy() {
 template <int D>
 void Solver<D>::advance_positions() {
   const double dt = dt_next_;
+  if (particles_) particles_->drift(dt);
   const std::int64_t n = static_cast<std::int64_t>(position_.size());
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
   for (std::int64_t k = 0; k < n; ++k) {
@@ -248,6 +284,8 @@ void Solver<D>::advance_positions() {
 
 template <int D>
 void Solver<D>::element_kinematics() {
+  // Particles: density, velocity gradient and their own material batches (the same Material::update).
+  if (particles_) particles_->update_state(dt_, time_);
   const KinematicsResult r =
       elements_.kinematics(position_.data(), velocity_.data(), dt_, viscosity_, batches_);
   energy_.viscous += r.viscous_work;
@@ -287,6 +325,7 @@ void Solver<D>::gather_element_state() {
         !std::isfinite(energy))
       bad = std::min(bad, k);
   }
+  if (particles_) internal += particles_->internal_energy();
   internal_energy_ = internal;
   if (bad != std::numeric_limits<std::int64_t>::max()) {
     const std::size_t e = static_cast<std::size_t>(bad);
@@ -333,6 +372,13 @@ void Solver<D>::choose_time_step() {
     const auto m = static_cast<std::size_t>(elements_.material[static_cast<std::size_t>(best_e)]);
     reason = fmt::format("element {} ({}): l/(c+|v|)", best_e + 1, model_.materials[m].name);
   }
+  if (particles_) {
+    const TimeStepLimit vote = particles_->stable_time_step();
+    if (run.cfl * vote.dt < dt) {
+      dt = run.cfl * vote.dt;
+      reason = vote.reason;
+    }
+  }
   // Hold the step while the limit sits within 2 % above it: a step that
   // follows |v| every cycle pumps energy in or out of a vibration (the
   // central difference conserves energy only between changes of dt).
@@ -346,7 +392,7 @@ void Solver<D>::choose_time_step() {
     reason = "max_dt";
   }
   if (!(dt > run.min_dt) || !std::isfinite(dt)) {
-    if (best_e >= 0)
+    if (best_e >= 0 && (!particles_ || reason.rfind("element", 0) == 0))
       fail(NumericalError(
           EntityKind::element, best_e + 1, "time step",
           fmt::format("dt {:.6g} s is below min_dt {:.6g} s (l = {:.6g} m, c = {:.6g} m/s, |v| = {:.6g} m/s)",
@@ -389,6 +435,7 @@ FieldSnapshot Solver<D>::snapshot() const {
   s.element_plastic_strain = element_plastic_strain_;
   s.element_damage = element_damage_;
   s.element_material = elements_.material;
+  if (particles_) particles_->fill_snapshot(s);
   return s;
 }
 

@@ -8,6 +8,7 @@
 // velocity gradient by kernel sums) slot in beside element_kinematics, and
 // their material points are further batches updated by update_materials.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "model/model.hpp"
 #include "output/snapshot.hpp"
 #include "solver/run.hpp"
+#include "sph/sph_system.hpp"
 
 namespace camouflet {
 
@@ -51,6 +53,9 @@ class Solver {
   const std::vector<double>& node_mass() const { return node_mass_; }
   const FemElements<D>& elements() const { return elements_; }
   const std::vector<MaterialPoints>& batches() const { return batches_; }
+  // The SPH particles of the model (null when it has none).
+  sph::SphSystem<D>* particles() { return particles_.get(); }
+  const sph::SphSystem<D>* particles() const { return particles_.get(); }
 
  private:
   // Stages of step(), in order.
@@ -65,6 +70,7 @@ class Solver {
   void choose_time_step();
 
   [[noreturn]] void fail(NumericalError error) const;
+  std::vector<sph::MirrorPlane> particle_planes() const;
 
   const Model& model_;
   GeometryMode mode_;
@@ -76,6 +82,7 @@ class Solver {
   std::vector<double> node_mass_;                 // kg (plane strain: per metre of depth)
 
   FemElements<D> elements_;
+  std::unique_ptr<sph::SphSystem<D>> particles_;
   std::vector<MaterialPoints> batches_;  // one per Model::materials entry
   BoundaryConditions<D> boundaries_;
   HourglassControl hourglass_;

@@ -25,6 +25,10 @@ struct SphOptions {
   bool artificial_stress = true;
   double artificial_stress_epsilon = 0.3;
   double artificial_stress_power = 4.0;
+  // Momentum/continuity pair (sph_system.hpp): true = volume form (Colagrossi &
+  // Landrini 2003), robust at density jumps; false = classic density form
+  // sigma_i/rho_i^2 + sigma_j/rho_j^2 (Monaghan 1992).
+  bool volume_form = true;
   // XSPH velocity smoothing for the position update (Monaghan 1989); 0 = off.
   double xsph = 0.0;
   // Kernel-gradient correction of the velocity gradient (Randles & Libersky

@@ -71,9 +71,11 @@ void SphSystem<D>::compute_accelerations() {
     }
   }
   prepare_neighbours();
+  if (options_.kernel_correction && !correction_current_) compute_correction();
 
   const double alpha = options_.viscosity_alpha, beta = options_.viscosity_beta;
   const bool tensile = options_.artificial_stress;
+  const bool volume_form = options_.volume_form;
   const double power = options_.artificial_stress_power;
   const double factor = options_.smoothing_factor;
   const auto& x = p_.position;
@@ -93,7 +95,7 @@ void SphSystem<D>::compute_accelerations() {
       if (r2 >= support_factor * support_factor * hij * hij) continue;
       ++count;
       const double r = std::sqrt(r2);
-      const Vec<D> grad = dx * kernel_.gradient_factor(r, hij);
+      const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(r, hij));
       const Vec<D> dv = v[i] - v[j];
       const double vr = dot(dv, dx);
       double pi_ij = 0.0;
@@ -103,7 +105,9 @@ void SphSystem<D>::compute_accelerations() {
         pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
         mu_max = std::max(mu_max, -mu);
       }
-      SymTensor pair = p_.stress_term[i] + p_.stress_term[j];
+      // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
+      SymTensor pair = volume_form ? p_.stress_term[i] * (1.0 / eta[j]) + p_.stress_term[j] * (1.0 / eta[i])
+                                   : p_.stress_term[i] * (1.0 / eta[i]) + p_.stress_term[j] * (1.0 / eta[j]);
       if (tensile) {
         const double dp = hij / factor;  // current particle spacing
         const double f = kernel_.value(r, hij) / kernel_.value(dp, hij);
@@ -122,10 +126,17 @@ void SphSystem<D>::compute_accelerations() {
 }
 
 template <int D>
-void SphSystem<D>::advance(double dt) {
+void SphSystem<D>::kick(double dt) {
   const std::size_t n = p_.real;
+  velocity_old_.assign(p_.velocity.begin(), p_.velocity.begin() + static_cast<std::ptrdiff_t>(n));
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p_.velocity[i] += p_.acceleration[i] * dt;
+}
+
+template <int D>
+void SphSystem<D>::drift(double dt) {
+  const std::size_t n = p_.real;
+  correction_current_ = false;
   std::vector<Vec<D>> shift(n);
   if (options_.xsph > 0.0) {
     // XSPH (Monaghan 1989): move with the velocity smoothed over neighbours.
@@ -160,6 +171,53 @@ void SphSystem<D>::advance(double dt) {
 }
 
 template <int D>
+void SphSystem<D>::compute_correction() {
+  // B_i = M_i^-1, M_i = sum_j V_j (x_j - x_i) (x) grad_i W_ij (Randles & Libersky
+  // 1996, eq. 20; Bonet & Lok 1999): symmetric for a radial kernel. Where M is
+  // near singular (a particle with too few neighbours) B = I.
+  const std::size_t n = p_.real;
+  prepare_neighbours();
+  const auto& x = p_.position;
+  const auto& h = p_.smoothing_length;
+#pragma omp parallel for schedule(dynamic, 128)
+  for (std::size_t i = 0; i < n; ++i) {
+    double moment[D][D] = {};
+    for (const std::uint32_t j : search_.neighbours(i)) {
+      const Vec<D> dx = x[i] - x[j];
+      const double r2 = dot(dx, dx);
+      const double hij = pair_smoothing_length(h[i], h[j]);
+      if (r2 >= support_factor * support_factor * hij * hij) continue;
+      const double f = kernel_.gradient_factor(std::sqrt(r2), hij) * p_.mass[j] / p_.planar_density[j];
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) moment[a][b] -= f * dx[a] * dx[b];
+    }
+    double inv[D][D];
+    SymTensor b = SymTensor::identity();
+    double det = 1.0;
+    if constexpr (D == 2) {
+      det = moment[0][0] * moment[1][1] - moment[0][1] * moment[1][0];
+    } else {
+      det = moment[0][0] * (moment[1][1] * moment[2][2] - moment[1][2] * moment[2][1]) -
+            moment[0][1] * (moment[1][0] * moment[2][2] - moment[1][2] * moment[2][0]) +
+            moment[0][2] * (moment[1][0] * moment[2][1] - moment[1][1] * moment[2][0]);
+    }
+    if (std::abs(det) > 0.05 && invert<D>(moment, inv)) {
+      b.xx = inv[0][0];
+      b.yy = inv[1][1];
+      b.xy = 0.5 * (inv[0][1] + inv[1][0]);
+      if constexpr (D == 3) {
+        b.zz = inv[2][2];
+        b.yz = 0.5 * (inv[1][2] + inv[2][1]);
+        b.zx = 0.5 * (inv[2][0] + inv[0][2]);
+      }
+    }
+    p_.correction[i] = b;
+  }
+  refresh_ghosts();
+  correction_current_ = true;
+}
+
+template <int D>
 void SphSystem<D>::update_state(double dt, double time) {
   const std::size_t n = p_.real;
   const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
@@ -171,10 +229,12 @@ void SphSystem<D>::update_state(double dt, double time) {
   const auto& h = p_.smoothing_length;
   std::vector<double> eta_new(n), h_new(n);
 
+  const bool corrected = options_.kernel_correction;
+  if (corrected) compute_correction();
 #pragma omp parallel for schedule(dynamic, 128)
   for (std::size_t i = 0; i < n; ++i) {
     double eta_rate = 0.0;
-    double grad_v[D][D] = {}, moment[D][D] = {}, grad_v_corr[D][D] = {};
+    double L[3][3] = {};
     for (const std::uint32_t j : search_.neighbours(i)) {
       const Vec<D> dx = x[i] - x[j];
       const double r2 = dot(dx, dx);
@@ -182,32 +242,23 @@ void SphSystem<D>::update_state(double dt, double time) {
       if (r2 >= support_factor * support_factor * hij * hij) continue;
       const Vec<D> grad = dx * kernel_.gradient_factor(std::sqrt(r2), hij);
       const Vec<D> dv = v[i] - v[j];
-      eta_rate += m[j] * dot(dv, grad);
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) grad_v[a][b] -= m[j] * dv[a] * grad[b];
-      if (options_.kernel_correction) {
-        const double vol = m[j] / eta[j];
+      // Volume form: weights V_j = m_j / eta_j (times eta_i for the rate); density form: m_j / eta_i.
+      const double weight = options_.volume_form ? m[j] / eta[j] : m[j] / eta[i];
+      if (corrected) {
+        // Continuity with the pair gradient of the momentum sum (conjugate);
+        // L with particle i's own correction, exact for linear fields.
+        eta_rate += weight * dot(dv, pair_gradient(i, j, grad));
+        const Vec<D> own = contract_vector<D>(p_.correction[i], grad);
         for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) {
-            grad_v_corr[a][b] -= vol * dv[a] * grad[b];
-            moment[a][b] -= vol * dx[a] * grad[b];
-          }
+          for (int b = 0; b < D; ++b) L[a][b] -= weight * dv[a] * own[b];
+      } else {
+        eta_rate += weight * dot(dv, grad);
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) L[a][b] -= weight * dv[a] * grad[b];
       }
     }
-    // L = -(1/eta_i) sum m_j v_ij (x) grad W: the velocity gradient whose work
-    // matches the momentum sum (energy-consistent); with the correction,
-    // L = G M^-1 so that a linear field is differentiated exactly.
-    double inv[D][D];
-    const bool corrected = options_.kernel_correction && invert<D>(moment, inv);
-    double L[3][3] = {};
-    for (int a = 0; a < D; ++a)
-      for (int b = 0; b < D; ++b) {
-        if (corrected) {
-          for (int c = 0; c < D; ++c) L[a][b] += grad_v_corr[a][c] * inv[c][b];
-        } else {
-          L[a][b] = grad_v[a][b] / eta[i];
-        }
-      }
+    // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
+    // matches the momentum sum (energy-consistent).
     if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
     SymTensor d{L[0][0],
                 L[1][1],
@@ -218,7 +269,7 @@ void SphSystem<D>::update_state(double dt, double time) {
     p_.strain_rate[i] = d;
     p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
     // Continuity, integrated as d ln(eta) so that eta stays positive.
-    eta_new[i] = eta[i] * std::exp(dt * eta_rate / eta[i]);
+    eta_new[i] = eta[i] * std::exp(dt * eta_rate);
     double hi = h[i];
     if (options_.variable_smoothing_length) {
       const double h0 = p_.reference_smoothing_length[i];
@@ -258,10 +309,14 @@ void SphSystem<D>::update_state(double dt, double time) {
 }
 
 // The class itself is instantiated in sph_system.cpp; these are its members defined here.
+template void SphSystem<2>::compute_correction();
+template void SphSystem<3>::compute_correction();
 template void SphSystem<2>::compute_accelerations();
 template void SphSystem<3>::compute_accelerations();
-template void SphSystem<2>::advance(double);
-template void SphSystem<3>::advance(double);
+template void SphSystem<2>::kick(double);
+template void SphSystem<3>::kick(double);
+template void SphSystem<2>::drift(double);
+template void SphSystem<3>::drift(double);
 template void SphSystem<2>::update_state(double, double);
 template void SphSystem<3>::update_state(double, double);
 

@@ -41,6 +41,7 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   p_.stress_term.resize(n);
   p_.tensile_term.resize(n);
   p_.wave_speed.resize(n);
+  p_.correction.assign(n, SymTensor::identity());
   p_.acceleration.assign(n, Vec<D>{});
   p_.displacement.assign(n, Vec<D>{});
   p_.density.resize(n);
@@ -126,8 +127,7 @@ void SphSystem<D>::gather_material_state() {
     p_.wave_speed[i] = pts.wave_speed(k);
     p_.plastic_strain[i] = pts.plastic_strain[k];
     p_.damage[i] = pts.damage[k];
-    const double eta = p_.planar_density[i];
-    p_.stress_term[i] = sigma * (geometric_weight(p_.position[i]) / (eta * eta));
+    p_.stress_term[i] = sigma * (geometric_weight(p_.position[i]) / p_.planar_density[i]);
   }
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(p_.pressure[i]) ||
@@ -152,6 +152,7 @@ void SphSystem<D>::refresh_ghosts() {
     p_.wave_speed[k] = p_.wave_speed[s];
     p_.stress_term[k] = mirror_tensor(p_.stress_term[s], plane.axis);
     p_.tensile_term[k] = mirror_tensor(p_.tensile_term[s], plane.axis);
+    p_.correction[k] = mirror_tensor(p_.correction[s], plane.axis);
   }
 }
 
@@ -172,6 +173,7 @@ void SphSystem<D>::prepare_neighbours() {
   p_.stress_term.resize(total);
   p_.tensile_term.resize(total);
   p_.wave_speed.resize(total);
+  p_.correction.resize(total, SymTensor::identity());
   refresh_ghosts();
   search_.build(p_.position, p_.smoothing_length, n, skin_);
 }
@@ -205,6 +207,14 @@ template <int D>
 double SphSystem<D>::kinetic_energy() const {
   double e = 0.0;
   for (std::size_t i = 0; i < p_.real; ++i) e += 0.5 * p_.mass[i] * dot(p_.velocity[i], p_.velocity[i]);
+  return e;
+}
+
+template <int D>
+double SphSystem<D>::centred_kinetic_energy() const {
+  if (velocity_old_.size() != p_.real) return kinetic_energy();
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.real; ++i) e += 0.5 * p_.mass[i] * dot(velocity_old_[i], p_.velocity[i]);
   return e;
 }
 

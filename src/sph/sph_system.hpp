@@ -8,10 +8,18 @@
 // ring), its planar density eta = w rho with w = 2 pi r in r-z and w = 1
 // otherwise, and the stress sigma from the shared material update.
 //
-//   continuity   d eta_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij
-//   vel. grad.   L_i = -(1/eta_i) sum_j m_j (v_i - v_j) (x) grad_i W_ij  [+ hoop L_tt = v_r / r]
-//   momentum     dv_i/dt = sum_j m_j (T_i + T_j - Pi_ij I + f_ij^n (R_i + R_j)) . grad_i W_ij
-//                          [- sigma_tt,i / (rho_i r_i) e_r]                  T = w sigma / eta^2
+//   continuity   d eta_i/dt = eta_i sum_j V_j (v_i - v_j) . grad_i W_ij        V_j = m_j / eta_j
+//   vel. grad.   L_i = -sum_j V_j (v_i - v_j) (x) grad_i W_ij     [+ hoop L_tt = v_r / r]
+//   momentum     dv_i/dt = sum_j m_j (S_i / eta_j + S_j / eta_i - Pi_ij I + f_ij^n (R_i + R_j)) . grad_i W_ij
+//                          [- sigma_tt,i / (rho_i r_i) e_r]                  S = w sigma / eta = sigma / rho
+// This is the "volume" form (Colagrossi & Landrini 2003, JCP 191, eqs. 9-10;
+// Hu & Adams 2006): it stays smooth across density jumps (explosive/soil,
+// Sod's 8:1 contact with equal spacing), where the classic "density" form
+// sum m_j (sigma_i/rho_i^2 + sigma_j/rho_j^2) (Monaghan 1992, eq. 3.5;
+// Libersky & Petschek 1991) lets a light particle next to heavy ones run away.
+// Both are pairwise antisymmetric (momentum-conserving) and each is
+// energy-conjugate to its own continuity equation; SphOptions::volume_form
+// = false selects the classic pair (continuity weight m_j / eta_i instead).
 //   energy       Material::update from D and the density change (p dv is then
 //                exactly the work of the pressure part of the momentum sum),
 //                plus the viscous heating 1/2 sum_j m_j Pi_ij (v_i - v_j) . grad_i W_ij.
@@ -56,9 +64,10 @@ struct ParticleArrays {
   std::vector<double> mass;              // kg (axisymmetric: ring mass)
   std::vector<double> planar_density;    // eta = w rho: kg/m^3 (3-D, plane), kg/m^2 per radian x 2 pi (r-z)
   std::vector<double> smoothing_length;  // m
-  std::vector<SymTensor> stress_term;    // T = w sigma / eta^2 (= sigma / rho^2 off-axis)
-  std::vector<SymTensor> tensile_term;   // artificial stress R, same scaling as T
+  std::vector<SymTensor> stress_term;    // S = w sigma / eta (= sigma / rho), m^2/s^2
+  std::vector<SymTensor> tensile_term;   // artificial stress R, scaled as sigma / rho^2
   std::vector<double> wave_speed;        // m/s, sqrt(c^2 + 4G/3rho)
+  std::vector<SymTensor> correction;     // kernel-gradient correction B = M^-1 (identity when off)
   // --- particles only ---
   std::vector<Vec<D>> acceleration;                // m/s^2
   std::vector<Vec<D>> displacement;                // m, from the initial position
@@ -96,7 +105,14 @@ class SphSystem {
 
   // --- stages of the cycle ---
   void compute_accelerations();
-  void advance(double dt);
+  void advance(double dt) {
+    kick(dt);
+    drift(dt);
+  }
+  // The two halves of advance() for a driver with variable steps (the solver):
+  // kick spans the impulse at t_n (mean of the two half steps), drift the new step.
+  void kick(double dt);
+  void drift(double dt);
   void update_state(double dt, double time);
   // One whole cycle for pure-SPH runs and tests: advance, update_state, compute_accelerations.
   // Call compute_accelerations() once before the first step.
@@ -106,7 +122,9 @@ class SphSystem {
   // section 10), the smallest over particles, without the CFL factor; the reason names the particle.
   TimeStepLimit stable_time_step() const;
 
-  double kinetic_energy() const;   // J (axisymmetric: full revolution)
+  double kinetic_energy() const;  // J (axisymmetric: full revolution)
+  // Time-centred kinetic energy at t_n, 1/2 m v(n-1/2) . v(n+1/2) (after kick()).
+  double centred_kinetic_energy() const;
   double internal_energy() const;  // J
   Vec<D> momentum() const;         // kg m/s
 
@@ -116,6 +134,23 @@ class SphSystem {
 
  private:
   void prepare_neighbours();
+  void compute_correction();
+  // Kernel gradient of the pair: grad_i W_ij, or with the correction the
+  // antisymmetric 1/2 (B_i + B_j) grad_i W_ij (so momentum stays conserved).
+  Vec<D> pair_gradient(std::size_t i, std::size_t j, const Vec<D>& grad) const {
+    if (!options_.kernel_correction) return grad;
+    const SymTensor b = (p_.correction[i] + p_.correction[j]) * 0.5;
+    Vec<D> out;
+    if constexpr (D == 2) {
+      out[0] = b.xx * grad[0] + b.xy * grad[1];
+      out[1] = b.xy * grad[0] + b.yy * grad[1];
+    } else {
+      out[0] = b.xx * grad[0] + b.xy * grad[1] + b.zx * grad[2];
+      out[1] = b.xy * grad[0] + b.yy * grad[1] + b.yz * grad[2];
+      out[2] = b.zx * grad[0] + b.yz * grad[1] + b.zz * grad[2];
+    }
+    return out;
+  }
   void refresh_ghosts();
   void gather_material_state();
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
@@ -126,9 +161,11 @@ class SphSystem {
   std::vector<MirrorPlane> planes_;
   std::vector<Ghost> ghosts_;
   NeighbourSearch<D> search_;
+  bool correction_current_ = false;
   double skin_ = 0.0;
   double ghost_reach_ = 0.0;
   ParticleArrays<D> p_;
+  std::vector<Vec<D>> velocity_old_;  // v(n-1/2), kept by kick() for the centred kinetic energy
   std::vector<std::shared_ptr<const Material>> materials_;   // by Model::materials index
   std::vector<MaterialPoints> batches_;                      // by Model::materials index
   std::vector<std::vector<std::uint32_t>> batch_particles_;  // particle of each slot

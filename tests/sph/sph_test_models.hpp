@@ -1,0 +1,89 @@
+#pragma once
+// Small builders for the SPH tests: materials from the registry (the same
+// factories a case file uses), particle parts, and a fixed-CFL driver loop.
+#include <omp.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "materials/registry.hpp"
+#include "mesh/particle_fill.hpp"
+#include "model/model.hpp"
+#include "sph/sph_system.hpp"
+
+namespace camouflet::test {
+
+inline std::shared_ptr<const Material> ideal_gas(const std::string& name, double density, double gamma,
+                                                 double specific_energy) {
+  Parameters eos;
+  eos.set_string("type", "ideal_gas");
+  eos.set_number("density", density);
+  eos.set_number("gamma", gamma);
+  eos.set_number("specific_energy", specific_energy);
+  return make_material(name, "", {}, eos, Parameters{}, Parameters{});
+}
+
+// Linear elastic solid: polynomial EOS p = K mu and Johnson-Cook with a yield
+// stress far above anything the tests reach (so it stays elastic).
+inline std::shared_ptr<const Material> elastic_solid(const std::string& name, double density, double bulk,
+                                                     double shear) {
+  Parameters eos, strength;
+  eos.set_string("type", "polynomial");
+  eos.set_number("density", density);
+  eos.set_number("a1", bulk);
+  strength.set_string("type", "johnson_cook");
+  strength.set_number("shear_modulus", shear);
+  strength.set_number("yield_stress", 1e6 * shear);
+  strength.set_number("hardening_modulus", 0.0);
+  strength.set_number("hardening_exponent", 1.0);
+  strength.set_number("melt_temperature", 1e9);
+  strength.set_number("specific_heat", 1e9);
+  strength.set_bool("isothermal", true);
+  return make_material(name, "", {}, eos, strength, Parameters{});
+}
+
+// Adds a material, an SPH part using it and its particles.
+inline int add_sph_part(Model& model, const std::string& name, std::shared_ptr<const Material> material,
+                        ParticleFillSpec spec, std::array<double, 3> velocity = {}) {
+  model.materials.push_back({name, std::move(material), {}});
+  Part part;
+  part.name = name;
+  part.kind = PartKind::sph;
+  part.material = static_cast<int>(model.materials.size()) - 1;
+  part.initial_velocity = velocity;
+  model.parts.push_back(part);
+  spec.part = static_cast<int>(model.parts.size()) - 1;
+  fill_particles(model.particles, spec, model.run.mode);
+  return spec.part;
+}
+
+inline ParticleFillSpec box_fill(std::array<double, 3> lo, std::array<double, 3> hi, double spacing) {
+  ParticleFillSpec s;
+  s.region.shape = ParticleRegion::Shape::box;
+  s.region.min = lo;
+  s.region.max = hi;
+  s.spacing = spacing;
+  return s;
+}
+
+// Steps to t_end with dt = cfl x the SPH stable step; returns the number of cycles.
+// One thread: the test machine's cores are shared, and thousands of short
+// parallel regions per second then wait on descheduled threads.
+template <int D>
+long run_until(sph::SphSystem<D>& system, double t_end, double cfl, long max_cycles = 1000000) {
+  omp_set_num_threads(1);
+  double t = 0.0;
+  long cycles = 0;
+  system.compute_accelerations();
+  while (t < t_end * (1.0 - 1e-12) && cycles < max_cycles) {
+    double dt = cfl * system.stable_time_step().dt;
+    if (t + dt > t_end) dt = t_end - t;
+    t += dt;
+    system.step(dt, t);
+    ++cycles;
+  }
+  return cycles;
+}
+
+}  // namespace camouflet::test

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <map>
 #include <unordered_map>
 
 #include "sph/artificial_stress.hpp"
@@ -122,7 +123,9 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
         }
     if (near) points_.push_back(candidates[c]);
   }
-  if (points_.empty()) {
+  // Interface faces: boundary faces of the joined elements with a particle just outside them.
+  find_interface_faces(model, elements, particles, bins, reach);
+  if (points_.empty() || faces_.empty()) {
     const Join& join = model.joins.front();
     throw InputError(join.where, fmt::format("join: no element of the joined FEM parts lies within {:.4g} m of the "
                                              "particles of part '{}': the parts are not adjacent",
@@ -130,6 +133,82 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
   }
   particles.set_external_points(points_.size(),
                                 [this](sph::ParticleArrays<D>& p, std::size_t begin) { fill(p, begin); });
+}
+
+template <int D>
+void SphFemJoin<D>::find_interface_faces(const Model& model, const FemElements<D>& elements,
+                                         const sph::SphSystem<D>& particles,
+                                         const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,
+                                         double reach) {
+  constexpr int N = FemElements<D>::nodes;
+  constexpr int FN = face_nodes;
+  // Local faces of quad4 (edges, counter-clockwise) and hex8.
+  static const int quad_faces[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  static const int hex_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::map<std::array<std::int64_t, FN>, int> count;
+  auto local = [&](std::size_t e, int f) {
+    std::array<std::int64_t, FN> q{};
+    for (int a = 0; a < FN; ++a)
+      q[static_cast<std::size_t>(a)] =
+          elements.connectivity[e * N + static_cast<std::size_t>(D == 2 ? quad_faces[f][a] : hex_faces[f][a])];
+    return q;
+  };
+  constexpr int faces_per_element = D == 2 ? 4 : 6;
+  for (std::size_t e = 0; e < elements.size(); ++e)
+    for (int f = 0; f < faces_per_element; ++f) {
+      auto q = local(e, f);
+      std::sort(q.begin(), q.end());
+      ++count[q];
+    }
+  std::vector<char> joined(model.parts.size(), 0);
+  for (const Join& join : model.joins)
+    for (int p : join.fem_parts) joined[static_cast<std::size_t>(p)] = 1;
+  const auto& pa = particles.particles();
+  std::vector<Vec<D>> centres;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    if (!joined[static_cast<std::size_t>(model.mesh.element_part[e])]) continue;
+    const Vec<D> ce = element_centre(e);
+    for (int f = 0; f < faces_per_element; ++f) {
+      const auto q = local(e, f);
+      auto key = q;
+      std::sort(key.begin(), key.end());
+      if (count[key] != 1) continue;  // shared by two elements: not on the boundary
+      Vec<D> cf{};
+      for (int a = 0; a < FN; ++a)
+        for (int i = 0; i < D; ++i) cf[i] += x_[q[static_cast<std::size_t>(a)] * D + i] / FN;
+      const Vec<D> out = cf - ce;  // points out of the element through this face
+      const double half = std::sqrt(dot(out, out));
+      // A particle within one element half-size (or its own spacing) beyond the face, on its outer side.
+      bool faces_particles = false;
+      for (int a = -1; a <= 1 && !faces_particles; ++a)
+        for (int b = -1; b <= 1 && !faces_particles; ++b)
+          for (int c = (D == 3 ? -1 : 0); c <= (D == 3 ? 1 : 0) && !faces_particles; ++c) {
+            const auto it = bins.find(cell_key<D>(cf, reach, {a, b, c}));
+            if (it == bins.end()) continue;
+            for (std::uint32_t i : it->second) {
+              const Vec<D> d = pa.position[i] - cf;
+              const double along = dot(d, out) / half;
+              const double limit = 0.75 * std::max(2.0 * half, pa.spacing[i]);
+              if (along > 0.0 && dot(d, d) < limit * limit) {
+                faces_particles = true;
+                break;
+              }
+            }
+          }
+      if (!faces_particles) continue;
+      faces_.push_back(q);
+      centres.push_back(cf);
+    }
+  }
+  // Each coupling point sends its reactions to the interface face nearest to its element.
+  for (Point& pt : points_) {
+    const Vec<D> ce = element_centre(pt.element);
+    double best = 1e300;
+    for (std::size_t k = 0; k < centres.size(); ++k) {
+      const Vec<D> d = centres[k] - ce;
+      if (dot(d, d) < best) best = dot(d, d), pt.face = k;
+    }
+  }
 }
 
 template <int D>
@@ -179,7 +258,6 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
 template <int D>
 double SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f) const {
   // The pair force of sph_sums.cpp (compute_accelerations), term by term.
-  constexpr int N = FemElements<D>::nodes;
   const auto& p = particles.particles();
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
@@ -220,10 +298,8 @@ double SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* 
         const int axis = planes_[pt.planes[static_cast<std::size_t>(m)]].axis;
         reaction[axis] = -reaction[axis];
       }
-      for (int a = 0; a < N; ++a) {
-        const std::int64_t n = elements_->connectivity[pt.element * N + static_cast<std::size_t>(a)];
-        for (int d = 0; d < D; ++d) f[n * D + d] += reaction[d] / N;
-      }
+      for (const std::int64_t n : faces_[pt.face])
+        for (int d = 0; d < D; ++d) f[n * D + d] += reaction[d] / face_nodes;
     }
   }
   return power;

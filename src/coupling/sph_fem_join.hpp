@@ -17,8 +17,13 @@
 // appears where the zones meet.
 //
 // Conservation: the pair force F_ij of the (symmetric) momentum sum acts on
-// particle i, and -F_ij is spread equally over the nodes of element j, so
-// momentum is conserved pair by pair (mirror images of elements across the
+// particle i, and -F_ij goes to the FEM at the interface: spread equally over
+// the nodes of the interface face nearest to element j (a boundary face of
+// the joined elements facing the particles). So momentum is conserved pair by
+// pair, and a uniform stress passes the join as a traction on the interface
+// nodes only: the elements inside the band are already in equilibrium through
+// their own FEM forces (spreading the reactions over the band's nodes instead
+// strains the band and drains the wave's energy) (mirror images of elements across the
 // particle symmetry planes and the axis return their reaction mirrored: the
 // plane's reaction). Mass is not exchanged: each element keeps its mass on its
 // nodes. Energy: particle i books the part of the pair work conjugate to its
@@ -27,6 +32,7 @@
 // balance (it returns to zero as an elastic wave passes; tests measure it).
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "fem/fem_elements.hpp"
@@ -62,8 +68,13 @@ class SphFemJoin {
     std::uint8_t image_count = 0;
     double h0 = 0.0;    // m, smoothing length at the reference density
     double rho0 = 0.0;  // kg/m^3
+    std::size_t face = 0;  // index into faces_: where its reactions go
   };
+  static constexpr int face_nodes = D == 2 ? 2 : 4;
+  std::vector<std::array<std::int64_t, face_nodes>> faces_;  // interface faces
   void fill(sph::ParticleArrays<D>& p, std::size_t begin) const;
+  void find_interface_faces(const Model& model, const FemElements<D>& elements, const sph::SphSystem<D>& particles,
+                            const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins, double reach);
   Vec<D> element_centre(std::size_t e) const;
   Vec<D> image(Vec<D> x, const Point& point) const;
 

@@ -5,6 +5,8 @@
 // roller in r-z), driven by a sin^2 velocity pulse at the near end and
 // absorbed by a transmitting boundary at the far end.
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <string>
 
@@ -36,7 +38,7 @@ inline TimeHistory sin2_pulse(double duration) {
 
 // cell: element size (m); spacing: particle spacing (m).
 template <int D>
-JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing) {
+JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const Parameters& sph = {}) {
   use_threads(1);
   const ElasticConstants c;
   const double length = 1.2, width = 4 * cell;
@@ -60,6 +62,7 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing) {
   fill.region.min[static_cast<std::size_t>(along)] = 0.4;
   fill.region.max[static_cast<std::size_t>(along)] = 0.8;
   make_joined_zone(model, fill);
+  model.sph = sph;
 
   const double c_p = c.p_wave_speed(), duration = 0.1 / c_p;
   const std::string axes = "xyz";
@@ -114,8 +117,8 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing) {
 
   JoinCrossing r;
   double e_start = 0.0, w_start = 0.0;
-  const double t_start = 0.15 * length / c_p, t_stop = 1.1 * length / c_p;
-  const double scale_t = length / c_p;
+  const double t_start = 0.15 / c_p, t_stop = 1.1 / c_p;
+  const double scale_t = 1.0 / c_p;  // t in units of the time to cross 1 m
   while (solver.time() < model.run.end_time) {
     solver.limit_next_step(model.run.end_time - solver.time());
     solver.step();
@@ -131,6 +134,9 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing) {
     const EnergyBalance& e = solver.energy();
     const double total = e.kinetic + e.internal + e.hourglass;
     if (e_start == 0.0 && solver.time() >= t_start) e_start = total, w_start = e.boundary_work;
+    if (std::getenv("JOIN_DEBUG") && solver.cycle() % 50 == 0)
+      std::printf("t %.3f kin %.5g int %.5g hg %.5g visc %.5g sph_kin %.5g sph_int %.5g\n", t, e.kinetic, e.internal,
+                  e.hourglass, e.viscous, solver.particles()->kinetic_energy(), solver.particles()->internal_energy());
     if (r.energy_change == 0.0 && solver.time() >= t_stop) {
       r.energy_change = (total - e_start) / e_start;
       r.join_work = (e.boundary_work - w_start) / e_start;

@@ -80,7 +80,7 @@ struct EnergyLeft {
   double balance_error = 0.0;
 };
 
-EnergyLeft energy_left(GeometryMode mode, bool absorbing, double cell = 1.25e-2, double width = 0.04, double end = 0.0) {
+EnergyLeft energy_left(GeometryMode mode, bool absorbing, double cell = 1.25e-2, double width = 0.04, double end = 0.0, double angle = 45.0) {
   test::use_threads(1);
   const ElasticConstants c;
   const double size = 1.0;
@@ -107,8 +107,9 @@ EnergyLeft energy_left(GeometryMode mode, bool absorbing, double cell = 1.25e-2,
   double e0 = 0.0;
   for (std::size_t n = 0; n < solver.node_count(); ++n) {
     const double x = solver.position()[n * 2], y = solver.position()[n * 2 + 1];
-    std::array<double, 2> dir{inv_sqrt2, inv_sqrt2};
-    double xi = (x - 0.5 * size + y - 0.5 * size) * inv_sqrt2;
+    const double ang = angle * std::numbers::pi / 180.0;
+    std::array<double, 2> dir{std::cos(ang), std::sin(ang)};
+    double xi = (x - 0.5 * size) * dir[0] + (y - 0.5 * size) * dir[1];
     if (axi) {  // spherical shell of radius 0.2 m about the origin, radial velocity
       const double r = std::hypot(x, y);
       xi = r - 0.2;
@@ -129,6 +130,45 @@ EnergyLeft energy_left(GeometryMode mode, bool absorbing, double cell = 1.25e-2,
   return r;
 }
 
+// A plane P-pulse travelling along d = (1, -1)/sqrt(2) (initial velocity only:
+// half of it goes along d) meets the bottom face of a 3 m x 1.5 m box at 45
+// degrees; all faces transmit. At the gauge (1.6, 0.4) m the incident pulse
+// peaks at 0.85 m / c_p, the reflected P pulse at 1.41 m / c_p, the
+// mode-converted SV at 1.72 m / c_p and the diffraction from the ends of the
+// truncated pulse at <= 1.1 or >= 1.65 m / c_p (image-point geometry).
+std::pair<double, double> oblique_reflection() {
+  test::use_threads(1);
+  const ElasticConstants c;
+  const double cell = 1e-2, width = 0.08;
+  Model model = test::block_model(GeometryMode::plane_strain, {{"box", 0, {0, 0, 0}, {3.0, 1.5, 0}, {300, 150, 1}}}, c);
+  for (const char* f : {"box.xmin", "box.xmax", "box.ymin", "box.ymax"}) model.boundaries.push_back(transmitting(f));
+  const double c_p = c.p_wave_speed();
+  model.run.end_time = 1.55 / c_p;
+  Solver<2> solver(model);
+  const double d[2] = {1.0 / std::numbers::sqrt2, -1.0 / std::numbers::sqrt2};
+  std::size_t gauge = 0;
+  for (std::size_t n = 0; n < solver.node_count(); ++n) {
+    const double x = solver.position()[n * 2], y = solver.position()[n * 2 + 1];
+    const double xi = (x - 0.9) * d[0] + (y - 0.9) * d[1];
+    const double g = std::exp(-(xi * xi) / (width * width));
+    solver.velocity()[n * 2] = g * d[0];
+    solver.velocity()[n * 2 + 1] = g * d[1];
+    if (std::hypot(x - 1.6, y - 0.4) < std::hypot(solver.position()[gauge * 2] - 1.6, solver.position()[gauge * 2 + 1] - 0.4))
+      gauge = n;
+  }
+  double incident = 0.0, reflected = 0.0;
+  while (solver.time() < model.run.end_time) {
+    solver.limit_next_step(model.run.end_time - solver.time());
+    solver.step();
+    const double t = solver.time() * c_p;  // m travelled
+    const double v = std::hypot(solver.velocity()[gauge * 2], solver.velocity()[gauge * 2 + 1]);
+    if (t > 0.6 && t < 1.05) incident = std::max(incident, v);
+    if (t > 1.3 && t < 1.53) reflected = std::max(reflected, v);
+  }
+  std::printf("45 degrees: incident %.4f reflected P %.4f (cell %g m)\n", incident, reflected, cell);
+  return {incident, reflected};
+}
+
 }  // namespace
 
 TEST(TransmittingBoundary, NormalIncidencePlaneStrain) {
@@ -143,12 +183,9 @@ TEST(TransmittingBoundary, NormalIncidencePlaneStrain) {
 }
 
 TEST(TransmittingBoundary, ObliqueIncidence45Degrees) {
-  const EnergyLeft r = energy_left(GeometryMode::plane_strain, true);
-  // Reflected amplitude ~ sqrt(reflected energy / incident energy).
-  test::verify({"Transmitting boundary, plane P-pulse at 45 degrees: sqrt(energy left / initial)",
-                "0 (< 0.15 required)", 0.0, std::sqrt(r.fraction), 0.15, false, "-"});
-  test::verify({"Transmitting boundary, 45 degrees: energy balance with dashpot work", "0", 0.0,
-                r.balance_error, 0.01, false, "-"});
+  const auto [incident, reflected] = oblique_reflection();
+  test::verify({"Transmitting boundary, plane P-pulse at 45 degrees: reflected P / incident amplitude",
+                "0 (< 0.15 required)", 0.0, reflected / incident, 0.15, false, "-"});
 }
 
 TEST(TransmittingBoundary, SphericalWaveAxisymmetricQuarter) {
@@ -163,12 +200,9 @@ TEST(TransmittingBoundary, SphericalWaveAxisymmetricQuarter) {
 }
 
 TEST(TransmittingBoundary, DISABLED_Explore) {
-  for (double cell : {1.25e-2, 1e-2})
-    for (double width : {0.04, 0.08})
-      for (double end : {1.0, 1.4}) {
-        const EnergyLeft a = energy_left(GeometryMode::plane_strain, true, cell, width, end);
-        const EnergyLeft b = energy_left(GeometryMode::axisymmetric, true, cell, width, end + 0.6);
-        std::printf("cell %g width %g end %g: 45deg sqrt %.4f bal %.4f | sph %.4f bal %.4f\n", cell, width, end,
-                    std::sqrt(a.fraction), a.balance_error, b.fraction, b.balance_error);
-      }
+  for (double width : {0.08, 0.12})
+    for (double end : {2.0, 2.6}) {
+      const EnergyLeft b = energy_left(GeometryMode::axisymmetric, true, 1e-2, width, end);
+      std::printf("sph width %g end %g: %.4f bal %.4f\n", width, end, b.fraction, b.balance_error);
+    }
 }

@@ -31,8 +31,7 @@ ImpactResult disc_on_plate(double friction, double tangential_speed) {
   const GeometryMode mode = D == 2 ? GeometryMode::plane_strain : GeometryMode::three_d;
   const double cell = 4e-3, s = 2e-3, v0 = 50.0;
   // Plate: 0.12 x 0.02 (x 0.12) m, its top face at y = 0.
-  Model model = test::block_model(mode, {{"plate", 0, {-0.06, -0.02, -0.06}, {0.12, 0.02, 0.12}, {30, 5, 30}}}, c);
-  if (D == 2) model.mesh.dimension = 2;
+  Model model = test::block_model(mode, {{"plate", 0, {-0.06, -0.02, -0.02}, {0.12, 0.02, 0.04}, {30, 5, 10}}}, c);
   Part disc;
   disc.name = "disc";
   disc.kind = PartKind::sph;
@@ -73,21 +72,25 @@ ImpactResult disc_on_plate(double friction, double tangential_speed) {
   ImpactResult r;
   r.spacing = s;
   r.smallest_gap = 1e300;
-  double plate_top = 0.0;
   while (solver.time() < model.run.end_time) {
     solver.limit_next_step(model.run.end_time - solver.time());
     solver.step();
-    // Smallest distance of a particle centre above the plate's top surface (mean top-node height).
-    double top = 0.0;
-    int count = 0;
-    for (std::int64_t n : model.mesh.node_sets.at("plate.ymax")) {
-      top += solver.position()[static_cast<std::size_t>(n) * D + 1];
-      ++count;
-    }
-    plate_top = top / count;
+    // Height of each particle centre above the local plate surface: the mean
+    // height of the top nodes within one cell of it horizontally.
+    const auto& top = model.mesh.node_sets.at("plate.ymax");
     const auto& x = solver.particles()->particles().position;
-    for (std::size_t i = 0; i < solver.particles()->size(); ++i)
-      r.smallest_gap = std::min(r.smallest_gap, x[i][1] - plate_top);
+    for (std::size_t i = 0; i < solver.particles()->size(); ++i) {
+      if (x[i][1] > 0.01) continue;  // far above the plate
+      double surface = 0.0;
+      int count = 0;
+      for (std::int64_t n : top) {
+        const double* xn = &solver.position()[static_cast<std::size_t>(n) * D];
+        double horizontal = std::abs(xn[0] - x[i][0]);
+        if (D == 3) horizontal = std::max(horizontal, std::abs(xn[D - 1] - x[i][D - 1]));
+        if (horizontal < cell) surface += xn[1], ++count;
+      }
+      if (count > 0) r.smallest_gap = std::min(r.smallest_gap, x[i][1] - surface / count);
+    }
   }
   const Vec<D> p1 = momentum();
   Vec<D> dp = p1 - p0;

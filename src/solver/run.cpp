@@ -7,12 +7,9 @@
 #include <cmath>
 #include <optional>
 
+#include "output/progress.hpp"
 #include "output/run_output.hpp"
 #include "solver/solver.hpp"
-#if __has_include("output/progress.hpp")
-#include "output/progress.hpp"
-#define CAMOUFLET_HAS_PROGRESS 1
-#endif
 
 namespace camouflet {
 
@@ -26,10 +23,8 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   };
   Solver<D> solver(model);
   RunOutput output(model, options, solver.snapshot());
-#ifdef CAMOUFLET_HAS_PROGRESS
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
-#endif
   RunSummary summary;
   const auto summarise = [&](std::string reason, bool failed) {
     summary.time = solver.time();
@@ -55,10 +50,8 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.step();
       output.after_cycle(solver.snapshot());
       const EnergyBalance& energy = solver.energy();
-#ifdef CAMOUFLET_HAS_PROGRESS
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());
-#endif
       if (energy.relative_error > run.energy_error_limit) {
         NumericalError error(EntityKind::model, 0, "energy balance",
                              fmt::format("relative energy error {:.3e} exceeds energy_error_limit {:.3e}",
@@ -68,16 +61,12 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       }
     }
   } catch (const NumericalError& error) {
-#ifdef CAMOUFLET_HAS_PROGRESS
     progress.done();
-#endif
     summarise(error.what(), true);
     output.finish(solver.snapshot(), summary);
     throw;
   }
-#ifdef CAMOUFLET_HAS_PROGRESS
   progress.done();
-#endif
   summarise(reason, false);
   output.finish(solver.snapshot(), summary);
   return summary;

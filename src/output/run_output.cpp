@@ -21,6 +21,11 @@ namespace {
 // Sampling instants are compared with a relative slack so that an interval
 // that is an exact multiple of dt is not missed by round-off.
 constexpr double time_slack = 1e-9;
+// When a folder is written, the CSVs hold every sample; the in-memory
+// histories (gauges()) then stop growing at this many values (1 GiB), so a
+// long run sampling every cycle cannot exhaust memory. Peaks for the summary
+// are kept sample by sample and stay exact.
+constexpr std::size_t memory_values_limit = std::size_t{1} << 27;
 }  // namespace
 
 struct RunOutput::Impl {
@@ -28,6 +33,9 @@ struct RunOutput::Impl {
   fs::path dir;  // empty: sample only, write nothing
   std::vector<std::vector<LocatedGauge>> located;
   std::vector<GaugeSeries> series;
+  std::vector<GroupPeaks> peaks;
+  std::vector<std::size_t> samples;  // rows taken per group (written to the CSV)
+  std::size_t values_in_memory = 0;
   std::vector<std::unique_ptr<GaugeCsv>> csv;
   PvdIndex pvd;
   int snapshots = 0;
@@ -42,10 +50,16 @@ struct RunOutput::Impl {
       row.clear();
       for (const auto& gauge : located[g]) sample_gauge(gauge, s, row);
       auto& ser = series[g];
-      ser.time.push_back(s.time);
-      const std::size_t nq = ser.quantities.size();
-      for (std::size_t p = 0; p < located[g].size(); ++p)
-        for (std::size_t q = 0; q < nq; ++q) ser.values[q][p].push_back(row[p * nq + q]);
+      const std::size_t nq = ser.quantities.size(), np = located[g].size();
+      for (std::size_t p = 0; p < np; ++p)
+        for (std::size_t q = 0; q < nq; ++q) peaks[g].add(q * np + p, row[p * nq + q], s.time);
+      ++samples[g];
+      if (dir.empty() || values_in_memory + row.size() <= memory_values_limit) {
+        ser.time.push_back(s.time);
+        for (std::size_t p = 0; p < np; ++p)
+          for (std::size_t q = 0; q < nq; ++q) ser.values[q][p].push_back(row[p * nq + q]);
+        values_in_memory += row.size() + 1;
+      }
       if (!dir.empty()) csv[g]->write_row(s.time, row);
     }
     last_gauge_cycle = s.cycle;
@@ -84,6 +98,8 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
     ser.values.assign(quantities.size(), std::vector<std::vector<double>>(group.points.size()));
     o.located.push_back(std::move(located));
     o.series.push_back(std::move(ser));
+    o.peaks.emplace_back();
+    o.samples.push_back(0);
   }
 
   o.dir = options.output_dir;
@@ -123,7 +139,7 @@ void RunOutput::finish(const FieldSnapshot& final_state, const RunSummary& summa
   if (o.last_field_cycle != final_state.cycle) o.snapshot(final_state);
   if (o.dir.empty()) return;
   for (auto& c : o.csv) c->close();
-  write_file_atomically(o.dir / "summary.json", summary_json(o.model, summary, o.series));
+  write_file_atomically(o.dir / "summary.json", summary_json(o.model, summary, o.series, o.peaks, o.samples));
 }
 
 const std::vector<RunOutput::GaugeSeries>& RunOutput::gauges() const {

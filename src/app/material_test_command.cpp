@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "case/case_reader.hpp"
 #include "core/error.hpp"
 #include "materials/jwl_eos.hpp"
 #include "materials/material_driver.hpp"
@@ -19,6 +20,8 @@ namespace {
 
 struct MaterialTestOptions {
   std::string preset;
+  std::string case_file;
+  std::string material;
   std::string path = "uniaxial_strain";
   double strain_rate = -1.0;
   double final_strain = -0.01;
@@ -49,10 +52,31 @@ int print_cj_state(const Material& material) {
 }
 
 int run_material_test(const MaterialTestOptions& o) {
-  if (o.preset.empty())
-    throw InputError(SourceLocation{"", 0, 0, "--preset"}, "name a material with --preset");
-  auto material = make_material(o.preset, o.preset, SourceLocation{"", 0, 0, "--preset"}, Parameters{},
-                                Parameters{}, Parameters{});
+  std::shared_ptr<const Material> material;
+  Model model;  // keeps a case's materials alive
+  if (!o.case_file.empty()) {
+    if (!o.preset.empty() || o.material.empty())
+      throw InputError(SourceLocation{"", 0, 0, "--material"},
+                       "give --case FILE with --material NAME, or --preset");
+    model = read_case(o.case_file);
+    std::vector<std::string> names;
+    for (const NamedMaterial& m : model.materials) {
+      names.push_back(m.name);
+      if (m.name == o.material) material = m.material;
+    }
+    if (!material) {
+      const std::string guess = nearest(o.material, names);
+      throw InputError(SourceLocation{o.case_file, 0, 0, "--material"},
+                       fmt::format("no material '{}' in the case{}", o.material,
+                                   guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess)));
+    }
+  } else {
+    if (o.preset.empty())
+      throw InputError(SourceLocation{"", 0, 0, "--preset"},
+                       "name a material with --preset, or --case and --material");
+    material = make_material(o.preset, o.preset, SourceLocation{"", 0, 0, "--preset"}, Parameters{},
+                             Parameters{}, Parameters{});
+  }
   if (o.cj) return print_cj_state(*material);
   DriverSpec spec;
   try {
@@ -82,7 +106,7 @@ int run_material_test(const MaterialTestOptions& o) {
     }
     write_driver_csv(out, rows);
     std::cerr << fmt::format("camouflet material-test: {} rows of '{}' along {} written to {}\n", rows.size(),
-                             o.preset, to_string(spec.path), o.output);
+                             material->name(), to_string(spec.path), o.output);
   }
   return exit_ok;
 }
@@ -93,7 +117,9 @@ void add_material_test_command(CLI::App& app, CommandResult& result) {
   auto opts = std::make_shared<MaterialTestOptions>();
   auto* cmd =
       app.add_subcommand("material-test", "Drive one material point along a load path and write it as CSV");
-  cmd->add_option("--preset", opts->preset, "Material preset name (e.g. steel_1006_wang2005)")->required();
+  cmd->add_option("--preset", opts->preset, "Material preset name (e.g. steel_1006_wang2005)");
+  cmd->add_option("--case", opts->case_file, "Case file to take the material from (with --material)");
+  cmd->add_option("--material", opts->material, "Name of a [materials.NAME] block of the case file");
   cmd->add_option("--path", opts->path,
                   "uniaxial_strain | uniaxial_stress | hydrostatic | triaxial | simple_shear")
       ->capture_default_str();

@@ -30,6 +30,13 @@ std::pair<int, std::string> run(const std::string& args) {
   return {WEXITSTATUS(status), out};
 }
 
+// Position of the n-th comma (1-based) of a CSV line.
+std::size_t nthcomma(const std::string& line, int n) {
+  std::size_t at = std::string::npos;
+  for (int k = 0; k < n; ++k) at = line.find(',', at + 1);
+  return at;
+}
+
 }  // namespace
 
 TEST(PresetsWang2005, BuildWithTheirTables) {
@@ -63,4 +70,16 @@ TEST(MaterialTestCommand, PrintsCjStateAndDrivesAPath) {
   EXPECT_EQ(run("material-test --preset steel_1006_wang2005 --cj").first, 2);
   EXPECT_EQ(run("material-test --preset tnt_wang2006 --cj").first, 2);
   EXPECT_EQ(run("material-test --preset steel_1006_wang2005 --path biaxial").first, 2);
+  // A material of a case file: the example's elastic soil in uniaxial strain,
+  // sigma_xx = (K + 4G/3) eps with K = 0.66667 GPa, G = 0.4 GPa.
+  const std::string example = std::string(CAMOUFLET_SOURCE_DIR) + "/cases/examples/elastic_column.toml";
+  std::tie(status, out) = run("material-test --case " + example +
+                              " --material soil --path uniaxial_strain --strain-rate -1 --final-strain -1e-4 "
+                              "--steps 10");
+  EXPECT_EQ(status, 0);
+  const std::string last = out.substr(out.rfind('\n', out.size() - 2) + 1);
+  const double sigma_xx = std::stod(last.substr(nthcomma(last, 3) + 1));
+  test::verify({"material-test --case: uniaxial strain of the example's elastic soil", "(K + 4G/3) eps",
+                (6.6667e8 + 4.0 * 4.0e8 / 3.0) * -1e-4, sigma_xx, 1e-3, true, "Pa"});
+  EXPECT_EQ(run("material-test --case " + example + " --material soyl").first, 2);
 }

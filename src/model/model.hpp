@@ -129,6 +129,27 @@ struct GaugeGroup {
   SourceLocation where;
 };
 
+// A joined SPH-FEM interface (coupling issue, Wang et al. 2005 section 3.3):
+// the particles of `sph_part` and the elements of `fem_parts` meet along the
+// boundary of the hole the SPH zone was cut from (coupling/joined_zone.hpp)
+// and interact as one continuum (coupling/sph_fem_join.hpp).
+struct Join {
+  int sph_part = -1;           // index into Model::parts
+  std::vector<int> fem_parts;  // indices into Model::parts
+  SourceLocation where;
+};
+
+// A sliding interface (coupling issue): the particles of `sph_part` against the
+// FEM faces of `face_set`, penalty contact with Coulomb friction
+// (coupling/sliding_contact.hpp).
+struct Contact {
+  int sph_part = -1;             // index into Model::parts
+  std::string face_set;          // FemMesh::face_sets key
+  double friction = 0.0;         // Coulomb coefficient
+  double penalty_scale = 0.1;    // stiffness k = penalty_scale m / dt^2 per particle
+  SourceLocation where;
+};
+
 struct Model {
   std::string case_file;  // path as given
   std::string title;
@@ -140,6 +161,8 @@ struct Model {
   ParticleSet particles;
   Parameters sph;  // numerical SPH settings (the case's [sph] block), read by sph::read_sph_options
   std::vector<BoundaryCondition> boundaries;
+  std::vector<Join> joins;        // SPH-FEM joins (coupling issue)
+  std::vector<Contact> contacts;  // SPH-FEM sliding interfaces (coupling issue)
   std::vector<GaugeGroup> gauges;
   std::vector<DetonationPoint> detonations;
   std::vector<SourceLocation> detonation_where;  // same order as detonations

@@ -99,6 +99,7 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   viscosity_ = {model.run.viscosity_quadratic, model.run.viscosity_linear};
   boundaries_ = BoundaryConditions<D>(model);
   boundaries_.constrain(velocity_.data(), 0.0);
+  transmitting_ = TransmittingBoundary<D>(model, elements_);
 
   // SPH particles: same materials, own batches (sph/sph_system.hpp); symmetry
   // boundaries on axis-aligned planes reflect particles too.
@@ -107,8 +108,17 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     const sph::SphOptions options = sph::read_sph_options(sph_block);
     sph_block.finish();
     particles_ = std::make_unique<sph::SphSystem<D>>(model, options, particle_planes());
+    if (!model.joins.empty()) {
+      // The same planes as the particles' mirrors, axis first (SphSystem's order).
+      std::vector<sph::MirrorPlane> planes = particle_planes();
+      if (mode_ == GeometryMode::axisymmetric)
+        planes.insert(planes.begin(), sph::MirrorPlane{0, 0.0, sph::PlaneKind::symmetry});
+      join_ = std::make_unique<SphFemJoin<D>>(model, elements_, position_.data(), velocity_.data(), *particles_,
+                                              std::move(planes));
+    }
     particles_->compute_accelerations();
   }
+  contact_ = SlidingContact<D>(model);
 
   gather_element_state();
   choose_time_step();
@@ -199,6 +209,9 @@ void Solver<D>::add_forces() {
   hourglass_stored_ = elements_.add_internal_forces(position_.data(), velocity_.data(), force_.data(),
                                                     f_hourglass, hourglass_, dt_);
   if (particles_) particles_->compute_accelerations();  // SPH sums at t_n
+  if (join_) join_power_ = join_->add_reactions(*particles_, force_.data());  // reactions on the joined nodes
+  if (particles_ && !contact_.empty())
+    contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(), 0.5 * (dt_ + dt_next_));
 }
 
 template <int D>
@@ -224,9 +237,14 @@ void Solver<D>::advance_velocities() {
 template <int D>
 void Solver<D>::constrain_velocities() {
   const double dt_mean = 0.5 * (dt_ + dt_next_);
+  // Transmitting boundaries first: centred dashpots on v(n+1/2) (coupling/transmitting_boundary.hpp).
+  if (!transmitting_.empty())
+    energy_.boundary_work += transmitting_.damp(position_.data(), velocity_old_.data(), velocity_.data(),
+                                                node_mass_.data(), elements_, batches_, dt_mean);
   const double reaction_work = boundaries_.constrain(velocity_.data(), velocity_old_.data(),
                                                      node_mass_.data(), time_ + 0.5 * dt_next_, dt_, dt_mean);
   energy_.boundary_work += reaction_work + boundaries_.load_work(velocity_old_.data(), dt_);
+  energy_.boundary_work += (join_power_ + contact_power_) * dt_mean;  // join and contact work (coupling/)
 }
 
 template <int D>

@@ -13,6 +13,9 @@
 #include <vector>
 
 #include "boundary/boundary_conditions.hpp"
+#include "coupling/sliding_contact.hpp"
+#include "coupling/sph_fem_join.hpp"
+#include "coupling/transmitting_boundary.hpp"
 #include "fem/fem_elements.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
@@ -83,8 +86,13 @@ class Solver {
 
   FemElements<D> elements_;
   std::unique_ptr<sph::SphSystem<D>> particles_;
+  std::unique_ptr<SphFemJoin<D>> join_;  // SPH-FEM join (coupling/); in place: it registers itself with particles_
+  double join_power_ = 0.0;              // W, pair work across the join that no internal energy books
+  SlidingContact<D> contact_;            // particles against FEM faces (coupling/)
+  double contact_power_ = 0.0;           // W, power of the contact forces
   std::vector<MaterialPoints> batches_;  // one per Model::materials entry
   BoundaryConditions<D> boundaries_;
+  TransmittingBoundary<D> transmitting_;  // Lysmer-Kuhlemeyer dashpots (coupling/)
   HourglassControl hourglass_;
   ViscosityControl viscosity_;
 

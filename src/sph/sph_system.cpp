@@ -156,6 +156,10 @@ void SphSystem<D>::refresh_ghosts() {
     p_.tensile_term[k] = mirror_tensor(p_.tensile_term[s], plane.axis);
     p_.correction[k] = mirror_tensor(p_.correction[s], plane.axis);
   }
+  if (external_count_ > 0 && external_begin_ >= n && n > 0 &&
+      p_.position.size() == external_begin_ + external_count_ &&
+      p_.velocity.size() == p_.position.size())
+    external_provider_(p_, external_begin_);
 }
 
 template <int D>
@@ -167,6 +171,8 @@ void SphSystem<D>::prepare_neighbours() {
   for (std::size_t i = 0; i < n; ++i) h_max = std::max(h_max, p_.smoothing_length[i]);
   ghost_reach_ = support_factor * h_max + skin_;
   ghosts_ = make_ghosts(p_.position, n, planes_, ghost_reach_);
+  external_begin_ = p_.position.size();  // coupling points after the ghosts
+  p_.position.resize(external_begin_ + external_count_);
   const std::size_t total = p_.position.size();
   p_.velocity.resize(total);
   p_.mass.resize(total);

@@ -35,6 +35,7 @@
 //   advance(dt)              v(n+1/2) = v(n-1/2) + a dt; x(n+1) = x(n) + v dt
 //   update_state(dt, t)      eta, rho, L, h at x(n+1); Material::update -> sigma(n+1)
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -132,6 +133,26 @@ class SphSystem {
   void fill_snapshot(FieldSnapshot& snapshot) const;
   const NeighbourSearch<D>& neighbours() const { return search_; }
 
+  // --- coupling seam (coupling/sph_fem_join.hpp) ---
+  // `count` points of another package (FEM elements beside the particles)
+  // join the particle sums as neighbours, stored after the mirror ghosts from
+  // external_begin() on. `provider` writes their position, velocity, mass,
+  // planar density, smoothing length, stress and tensile terms, wave speed and
+  // correction whenever the ghosts are refreshed. No force on them is computed
+  // here: the coupling returns the reactions of the pair forces.
+  using ExternalProvider = std::function<void(ParticleArrays<D>&, std::size_t begin)>;
+  void set_external_points(std::size_t count, ExternalProvider provider) {
+    external_count_ = count;
+    external_provider_ = std::move(provider);
+  }
+  std::size_t external_begin() const { return external_begin_; }
+  std::size_t external_count() const { return external_count_; }
+  // Kernel-corrected pair gradient, as used by the momentum sum (public for the coupling).
+  Vec<D> corrected_gradient(std::size_t i, std::size_t j, const Vec<D>& grad) const {
+    return pair_gradient(i, j, grad);
+  }
+  const Kernel<D>& kernel() const { return kernel_; }
+
  private:
   void prepare_neighbours();
   void compute_correction();
@@ -169,6 +190,8 @@ class SphSystem {
   std::vector<std::shared_ptr<const Material>> materials_;   // by Model::materials index
   std::vector<MaterialPoints> batches_;                      // by Model::materials index
   std::vector<std::vector<std::uint32_t>> batch_particles_;  // particle of each slot
+  std::size_t external_begin_ = 0, external_count_ = 0;      // coupling seam
+  ExternalProvider external_provider_;
 };
 
 }  // namespace camouflet::sph

@@ -1,0 +1,235 @@
+#include "coupling/sph_fem_join.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include "sph/artificial_stress.hpp"
+
+namespace camouflet {
+
+namespace {
+
+template <int D>
+Vec<D> contract_vec(const SymTensor& s, const Vec<D>& g) {
+  Vec<D> out;
+  if constexpr (D == 2) {
+    out[0] = s.xx * g[0] + s.xy * g[1];
+    out[1] = s.xy * g[0] + s.yy * g[1];
+  } else {
+    out[0] = s.xx * g[0] + s.xy * g[1] + s.zx * g[2];
+    out[1] = s.xy * g[0] + s.yy * g[1] + s.yz * g[2];
+    out[2] = s.zx * g[0] + s.yz * g[1] + s.zz * g[2];
+  }
+  return out;
+}
+
+// Cell key of a point on a grid of edge `cell`.
+template <int D>
+std::int64_t cell_key(const Vec<D>& x, double cell, const std::array<int, 3>& offset = {0, 0, 0}) {
+  std::int64_t key = 0;
+  for (int i = 0; i < D; ++i)
+    key = key * 2000003 + static_cast<std::int64_t>(std::floor(x[i] / cell)) + offset[static_cast<std::size_t>(i)];
+  return key;
+}
+
+}  // namespace
+
+template <int D>
+Vec<D> SphFemJoin<D>::element_centre(std::size_t e) const {
+  constexpr int N = FemElements<D>::nodes;
+  Vec<D> c{};
+  for (int a = 0; a < N; ++a) {
+    const std::int64_t n = elements_->connectivity[e * N + static_cast<std::size_t>(a)];
+    for (int i = 0; i < D; ++i) c[i] += x_[n * D + i] / N;
+  }
+  return c;
+}
+
+template <int D>
+Vec<D> SphFemJoin<D>::image(Vec<D> x, const Point& point) const {
+  for (int k = 0; k < point.image_count; ++k) x = sph::mirror_position(x, planes_[point.planes[static_cast<std::size_t>(k)]]);
+  return x;
+}
+
+template <int D>
+SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, const double* x, const double* v,
+                          sph::SphSystem<D>& particles, std::vector<sph::MirrorPlane> planes)
+    : elements_(&elements),
+      x_(x),
+      v_(v),
+      planes_(std::move(planes)),
+      options_(particles.options()),
+      axisymmetric_(model.run.mode == GeometryMode::axisymmetric) {
+  if (model.joins.empty()) return;
+  std::vector<char> joined(model.parts.size(), 0);
+  for (const Join& join : model.joins)
+    for (int p : join.fem_parts) joined[static_cast<std::size_t>(p)] = 1;
+  const auto& pa = particles.particles();
+  double h_max = 0.0;
+  for (std::size_t i = 0; i < pa.real; ++i) h_max = std::max(h_max, pa.smoothing_length[i]);
+
+  // Candidates: every element of a joined part, then its mirror images (as make_ghosts does for particles).
+  std::vector<Point> candidates;
+  std::vector<Vec<D>> where;
+  double h_element_max = 0.0;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    if (!joined[static_cast<std::size_t>(model.mesh.element_part[e])]) continue;
+    const Vec<D> c = element_centre(e);
+    double planar_volume = elements.volume[e];
+    if (axisymmetric_) planar_volume /= 2.0 * std::numbers::pi * std::max(std::abs(c[0]), 1e-300);
+    Point p;
+    p.element = e;
+    p.rho0 = elements.density[e];
+    p.h0 = options_.smoothing_factor * std::pow(planar_volume, 1.0 / D);
+    h_element_max = std::max(h_element_max, p.h0);
+    candidates.push_back(p);
+    where.push_back(c);
+  }
+  // Reach: the kernel support of the largest pair smoothing length, with room for h to grow.
+  const double reach = sph::support_factor * std::max(h_max, h_element_max) * 1.25;
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    const std::size_t n_now = candidates.size();
+    for (std::size_t c = 0; c < n_now; ++c) {
+      if (std::abs(where[c][planes_[k].axis] - planes_[k].position) >= reach || candidates[c].image_count >= 3)
+        continue;
+      Point p = candidates[c];
+      p.planes[p.image_count++] = static_cast<std::uint8_t>(k);
+      candidates.push_back(p);
+      where.push_back(sph::mirror_position(where[c], planes_[k]));
+    }
+  }
+  // Keep the candidates within reach of a particle (particles binned on a grid of edge `reach`).
+  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> bins;
+  for (std::size_t i = 0; i < pa.real; ++i) bins[cell_key<D>(pa.position[i], reach)].push_back(static_cast<std::uint32_t>(i));
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    bool near = false;
+    for (int a = -1; a <= 1 && !near; ++a)
+      for (int b = -1; b <= 1 && !near; ++b)
+        for (int d = (D == 3 ? -1 : 0); d <= (D == 3 ? 1 : 0) && !near; ++d) {
+          const auto it = bins.find(cell_key<D>(where[c], reach, {a, b, d}));
+          if (it == bins.end()) continue;
+          for (std::uint32_t i : it->second) {
+            const Vec<D> dx = pa.position[i] - where[c];
+            if (dot(dx, dx) < reach * reach) {
+              near = true;
+              break;
+            }
+          }
+        }
+    if (near) points_.push_back(candidates[c]);
+  }
+  if (points_.empty()) {
+    const Join& join = model.joins.front();
+    throw InputError(join.where, fmt::format("join: no element of the joined FEM parts lies within {:.4g} m of the "
+                                             "particles of part '{}': the parts are not adjacent",
+                                             reach, model.parts[static_cast<std::size_t>(join.sph_part)].name));
+  }
+  particles.set_external_points(points_.size(),
+                                [this](sph::ParticleArrays<D>& p, std::size_t begin) { fill(p, begin); });
+}
+
+template <int D>
+void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
+  constexpr int N = FemElements<D>::nodes;
+  const FemElements<D>& el = *elements_;
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const Point& pt = points_[k];
+    const std::size_t e = pt.element;
+    Vec<D> c{}, vel{};
+    for (int a = 0; a < N; ++a) {
+      const std::int64_t n = el.connectivity[e * N + static_cast<std::size_t>(a)];
+      for (int i = 0; i < D; ++i) {
+        c[i] += x_[n * D + i] / N;
+        vel[i] += v_[n * D + i] / N;
+      }
+    }
+    SymTensor sigma = el.stress[e];
+    for (int m = 0; m < pt.image_count; ++m) {
+      const sph::MirrorPlane& plane = planes_[pt.planes[static_cast<std::size_t>(m)]];
+      c = sph::mirror_position(c, plane);
+      vel = sph::mirror_velocity(vel, plane);
+      sigma = sph::mirror_tensor(sigma, plane.axis);
+    }
+    const double rho = el.density[e];
+    const double w = axisymmetric_ ? 2.0 * std::numbers::pi * std::abs(c[0]) : 1.0;
+    const double eta = w * rho;
+    double h = pt.h0;
+    if (options_.variable_smoothing_length && rho > 0.0)
+      h = std::clamp(pt.h0 * std::pow(pt.rho0 / rho, 1.0 / D), options_.h_min_factor * pt.h0,
+                     options_.h_max_factor * pt.h0);
+    const std::size_t j = begin + k;
+    p.position[j] = c;
+    p.velocity[j] = vel;
+    p.mass[j] = el.mass[e];
+    p.planar_density[j] = eta;
+    p.smoothing_length[j] = h;
+    p.stress_term[j] = sigma * (1.0 / rho);
+    p.tensile_term[j] = options_.artificial_stress
+                            ? sph::artificial_stress<D>(sigma, options_.artificial_stress_epsilon, w / (eta * eta))
+                            : SymTensor{};
+    p.wave_speed[j] = el.wave_speed[e];
+    p.correction[j] = SymTensor::identity();
+  }
+}
+
+template <int D>
+double SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f) const {
+  // The pair force of sph_sums.cpp (compute_accelerations), term by term.
+  constexpr int N = FemElements<D>::nodes;
+  const auto& p = particles.particles();
+  const auto& kernel = particles.kernel();
+  const std::size_t begin = particles.external_begin(), end = begin + points_.size();
+  const double alpha = options_.viscosity_alpha, beta = options_.viscosity_beta;
+  double power = 0.0;
+  for (std::size_t i = 0; i < p.real; ++i) {
+    for (const std::uint32_t j : particles.neighbours().neighbours(i)) {
+      if (j < begin || j >= end) continue;
+      const Vec<D> dx = p.position[i] - p.position[j];
+      const double r2 = dot(dx, dx);
+      const double hij = sph::pair_smoothing_length(p.smoothing_length[i], p.smoothing_length[j]);
+      if (r2 >= sph::support_factor * sph::support_factor * hij * hij) continue;
+      const double r = std::sqrt(r2);
+      const Vec<D> grad = particles.corrected_gradient(i, j, dx * kernel.gradient_factor(r, hij));
+      const Vec<D> dv = p.velocity[i] - p.velocity[j];
+      const double vr = dot(dv, dx);
+      const double eta_i = p.planar_density[i], eta_j = p.planar_density[j];
+      double pi_ij = 0.0;
+      if (vr < 0.0) {
+        const double mu = hij * vr / (r2 + 0.01 * hij * hij);
+        const double c_mean = 0.5 * (p.wave_speed[i] + p.wave_speed[j]);
+        pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta_i + eta_j));
+      }
+      const SymTensor own = options_.volume_form ? p.stress_term[i] * (1.0 / eta_j) : p.stress_term[i] * (1.0 / eta_i);
+      SymTensor other = options_.volume_form ? p.stress_term[j] * (1.0 / eta_i) : p.stress_term[j] * (1.0 / eta_j);
+      if (options_.artificial_stress) {
+        const double dp = hij / options_.smoothing_factor;
+        const double fr = kernel.value(r, hij) / kernel.value(dp, hij);
+        other += (p.tensile_term[i] + p.tensile_term[j]) * std::pow(fr, options_.artificial_stress_power);
+      }
+      const double mm = p.mass[i] * p.mass[j];
+      const Vec<D> force = (contract_vec<D>(own + other, grad) - grad * pi_ij) * mm;  // on particle i
+      // Work not booked by particle i's internal energy (its own-stress part and half the viscous heat are).
+      power += mm * (dot(contract_vec<D>(other, grad), dv) - 0.5 * pi_ij * dot(grad, dv));
+      Vec<D> reaction = force * -1.0;
+      const Point& pt = points_[j - begin];
+      for (int m = 0; m < pt.image_count; ++m) {
+        const int axis = planes_[pt.planes[static_cast<std::size_t>(m)]].axis;
+        reaction[axis] = -reaction[axis];
+      }
+      for (int a = 0; a < N; ++a) {
+        const std::int64_t n = elements_->connectivity[pt.element * N + static_cast<std::size_t>(a)];
+        for (int d = 0; d < D; ++d) f[n * D + d] += reaction[d] / N;
+      }
+    }
+  }
+  return power;
+}
+
+template class SphFemJoin<2>;
+template class SphFemJoin<3>;
+
+}  // namespace camouflet

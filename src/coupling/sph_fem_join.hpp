@@ -1,0 +1,82 @@
+#pragma once
+// Joined SPH-FEM interface (Wang et al. 2005, section 3.3, Fig. 1b): the FEM
+// elements beside an SPH zone take part in the particle sums as neighbour
+// points, and the reactions of the pair forces go back to their nodes.
+//
+// Formulation: every element of a joined FEM part whose centre lies within
+// the kernel reach of a particle becomes a "coupling point" at its centre,
+// carrying the element's mass, density, stress, wave speed and the mean
+// velocity of its nodes, with h = smoothing_factor x (element size) scaled by
+// (rho0 / rho)^(1/d). This is the linking of Johnson (1994, Comput. Struct.
+// 51, 553: "Linking of Lagrangian particle methods to standard finite element
+// methods for high velocity impact computations"), where the elements at the
+// interface are seen as particles by the particle side, and of the Autodyn
+// SPH-Lagrange "join": the particle next to the interface has a full kernel
+// support (the elements continue its lattice, exactly when the spacing
+// matches the element size), so no free surface and no material interface
+// appears where the zones meet.
+//
+// Conservation: the pair force F_ij of the (symmetric) momentum sum acts on
+// particle i, and -F_ij is spread equally over the nodes of element j, so
+// momentum is conserved pair by pair (mirror images of elements across the
+// particle symmetry planes and the axis return their reaction mirrored: the
+// plane's reaction). Mass is not exchanged: each element keeps its mass on its
+// nodes. Energy: particle i books the part of the pair work conjugate to its
+// own stress (sph_system.hpp); the part conjugate to the element's stress is
+// the "join work", which the solver adds to the boundary work of the energy
+// balance (it returns to zero as an elastic wave passes; tests measure it).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "fem/fem_elements.hpp"
+#include "model/model.hpp"
+#include "sph/sph_system.hpp"
+
+namespace camouflet {
+
+template <int D>
+class SphFemJoin {
+ public:
+  SphFemJoin() = default;
+  // Coupling points for the elements of model.joins' FEM parts within reach
+  // of the particles, with their images across `planes` (the particle mirror
+  // planes, axis included). x, v: the solver's node arrays (n*D), read at
+  // every refresh; they must outlive this object.
+  SphFemJoin(const Model& model, const FemElements<D>& elements, const double* x, const double* v,
+             sph::SphSystem<D>& particles, std::vector<sph::MirrorPlane> planes);
+
+  bool empty() const { return points_.empty(); }
+  std::size_t point_count() const { return points_.size(); }
+
+  // After SphSystem::compute_accelerations (t_n): f (n*D) += the reactions of
+  // the pair forces on the coupling points, spread over the element nodes.
+  // Returns the join power (W): the pair work conjugate to the elements'
+  // stress, which no internal energy books.
+  double add_reactions(const sph::SphSystem<D>& particles, double* f) const;
+
+ private:
+  struct Point {
+    std::size_t element = 0;
+    std::array<std::uint8_t, 3> planes{};  // images: planes applied in order
+    std::uint8_t image_count = 0;
+    double h0 = 0.0;    // m, smoothing length at the reference density
+    double rho0 = 0.0;  // kg/m^3
+  };
+  void fill(sph::ParticleArrays<D>& p, std::size_t begin) const;
+  Vec<D> element_centre(std::size_t e) const;
+  Vec<D> image(Vec<D> x, const Point& point) const;
+
+  const FemElements<D>* elements_ = nullptr;
+  const double* x_ = nullptr;
+  const double* v_ = nullptr;
+  std::vector<Point> points_;
+  std::vector<sph::MirrorPlane> planes_;
+  sph::SphOptions options_;
+  bool axisymmetric_ = false;
+};
+
+extern template class SphFemJoin<2>;
+extern template class SphFemJoin<3>;
+
+}  // namespace camouflet

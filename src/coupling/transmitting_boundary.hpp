@@ -1,0 +1,58 @@
+#pragma once
+// Transmitting (non-reflecting) boundaries on FEM face sets: the viscous
+// dashpots of Lysmer & Kuhlemeyer (1969), J. Eng. Mech. Div. ASCE 95(EM4),
+// 859-877. On a boundary face with outward unit normal n the traction is
+//   t = -rho c_p (v . n) n - rho c_s (v - (v . n) n),
+// with rho, c_p = sqrt(c^2 + 4G/(3 rho)) (MaterialPoints::wave_speed) and
+// c_s = sqrt(G / rho) of the element behind the face at its current state.
+// The traction is lumped to the face nodes with the face-area weights of the
+// pressure loads (axisymmetric: the ring weights 2 pi (2 r_a + r_b) / 6 L,
+// which sum to 2 pi r_mean L), each node using its own velocity v(n-1/2).
+// The explicit dashpot is stable for rho c A dt / m < 2, i.e. for a CFL number
+// below 1 on the boundary element. The dissipated work enters the energy
+// balance as boundary work, centred like the load work (boundary_conditions.hpp).
+// docs/theory/coupling.md gives the limits (oblique incidence).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "fem/fem_elements.hpp"
+#include "materials/material_points.hpp"
+#include "model/model.hpp"
+
+namespace camouflet {
+
+template <int D>
+class TransmittingBoundary {
+ public:
+  TransmittingBoundary() = default;
+  // Resolves every `transmitting` boundary of the model onto faces of the
+  // mesh and the element behind each face. Throws InputError (at the
+  // condition's `where`) for an unknown face set or a face that is not the
+  // face of one element.
+  TransmittingBoundary(const Model& model, const FemElements<D>& elements);
+
+  bool empty() const { return faces_.empty(); }
+  std::size_t face_count() const { return faces_.size(); }
+
+  // After the velocity update: v (n*D) holds v_free, v_old = v(n-1/2); x the
+  // geometry at t_n. Replaces v by v(n+1/2) with the centred dashpot forces of
+  // the elements' latest impedance. Returns their work over dt (J, <= 0).
+  double damp(const double* x, const double* v_old, double* v, const double* node_mass,
+              const FemElements<D>& elements, const std::vector<MaterialPoints>& batches, double dt);
+
+ private:
+  struct Face {
+    std::array<std::int64_t, D == 2 ? 2 : 4> nodes;
+    std::size_t element;
+  };
+  std::vector<Face> faces_;
+  std::vector<std::int64_t> nodes_;                  // boundary nodes, sorted
+  std::vector<std::array<double, D * D>> damping_;   // N s/m, per entry of nodes_
+  bool axisymmetric_ = false;
+};
+
+extern template class TransmittingBoundary<2>;
+extern template class TransmittingBoundary<3>;
+
+}  // namespace camouflet

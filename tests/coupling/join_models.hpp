@@ -1,0 +1,142 @@
+#pragma once
+// A plane P-pulse crossing a joined SPH zone in one elastic material (issue 7,
+// "What it must show" 1-3): FEM [0, 0.4] L | SPH [0.4, 0.8] L | FEM [0.8, 1.2] L
+// along the column, laterally confined (symmetry planes, or the axis and a
+// roller in r-z), driven by a sin^2 velocity pulse at the near end and
+// absorbed by a transmitting boundary at the far end.
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "common/fem_models.hpp"
+#include "coupling/joined_zone.hpp"
+#include "solver/solver.hpp"
+
+namespace camouflet::test {
+
+struct JoinCrossing {
+  double incident = 0.0;              // m/s, peak at the FEM gauge x = 0.2 L
+  double reflected_fem_to_sph = 0.0;  // m/s, peak at that gauge from the interface at 0.4 L
+  double reflected_sph_to_fem = 0.0;  // m/s, peak from the interface at 0.8 L
+  double in_particles = 0.0;          // m/s, peak at the particle nearest 0.6 L
+  double transmitted = 0.0;           // m/s, peak at the FEM gauge 1.0 L
+  double energy_change = 0.0;         // relative change of E_kin + E_int + E_hg over the crossing
+  double join_work = 0.0;             // J, join work booked over the crossing, over the pulse energy
+};
+
+inline TimeHistory sin2_pulse(double duration) {
+  TimeHistory h;
+  for (int k = 0; k <= 40; ++k) {
+    const double s = k / 40.0;
+    h.time.push_back(s * duration);
+    h.value.push_back(std::pow(std::sin(std::numbers::pi * s), 2));
+  }
+  return h;
+}
+
+// cell: element size (m); spacing: particle spacing (m).
+template <int D>
+JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing) {
+  use_threads(1);
+  const ElasticConstants c;
+  const double length = 1.2, width = 4 * cell;
+  const bool axi = mode == GeometryMode::axisymmetric;
+  const int along = axi ? 1 : 0;  // the column's axis: x, or z (= y) in r-z
+  const int cells = static_cast<int>(std::lround(length / cell));
+  BlockSpec block{"bar", 0, {0, 0, 0}, {width, width, width}, {4, 4, 4}};
+  block.size[static_cast<std::size_t>(along)] = length;
+  block.cells[static_cast<std::size_t>(along)] = cells;
+  Model model = block_model(mode, {block}, c);
+  Part zone;
+  zone.name = "zone";
+  zone.kind = PartKind::sph;
+  zone.material = 0;
+  model.parts.push_back(zone);
+  ParticleFillSpec fill;
+  fill.part = 1;
+  fill.spacing = spacing;
+  fill.region.min = {0, 0, 0};
+  fill.region.max = {width, width, width};
+  fill.region.min[static_cast<std::size_t>(along)] = 0.4;
+  fill.region.max[static_cast<std::size_t>(along)] = 0.8;
+  make_joined_zone(model, fill);
+
+  const double c_p = c.p_wave_speed(), duration = 0.1 / c_p;
+  const std::string axes = "xyz";
+  auto face = [&](int axis, bool max) { return "bar." + std::string(1, axes[static_cast<std::size_t>(axis)]) + (max ? "max" : "min"); };
+  BoundaryCondition drive = velocity(face(along, false), along, 1.0);
+  drive.history = sin2_pulse(duration);
+  model.boundaries.push_back(drive);
+  BoundaryCondition far;
+  far.kind = BoundaryKind::transmitting;
+  far.set = face(along, true);
+  model.boundaries.push_back(far);
+  for (int axis = 0; axis < D; ++axis) {
+    if (axis == along) continue;
+    std::array<double, 3> normal{};
+    normal[static_cast<std::size_t>(axis)] = 1.0;
+    if (axi && axis == 0) {
+      BoundaryCondition a;
+      a.kind = BoundaryKind::axis;
+      a.set = face(0, false);
+      model.boundaries.push_back(a);
+    } else {
+      model.boundaries.push_back(symmetry(face(axis, false), normal));
+    }
+    model.boundaries.push_back(symmetry(face(axis, true), normal));
+  }
+  model.run.end_time = 1.6 * length / c_p;
+
+  Solver<D> solver(model);
+  auto nearest_node = [&](double s) {
+    std::size_t best = 0;
+    double best_d = 1e300;
+    for (std::size_t n = 0; n < solver.node_count(); ++n) {
+      if (solver.node_mass()[n] <= 0.0) continue;
+      double d2 = 0.0;
+      for (int i = 0; i < D; ++i) {
+        const double target = i == along ? s : 0.5 * width;
+        d2 += std::pow(solver.position()[n * D + static_cast<std::size_t>(i)] - target, 2);
+      }
+      if (d2 < best_d) best_d = d2, best = n;
+    }
+    return best;
+  };
+  const std::size_t g_in = nearest_node(0.2), g_out = nearest_node(1.0);
+  const auto& pa = solver.particles()->particles();
+  std::size_t g_sph = 0;
+  double best = 1e300;
+  for (std::size_t i = 0; i < pa.real; ++i) {
+    double d2 = 0.0;
+    for (int k = 0; k < D; ++k) d2 += std::pow(pa.position[i][k] - (k == along ? 0.6 : 0.5 * width), 2);
+    if (d2 < best) best = d2, g_sph = i;
+  }
+
+  JoinCrossing r;
+  double e_start = 0.0, w_start = 0.0;
+  const double t_start = 0.15 * length / c_p, t_stop = 1.1 * length / c_p;
+  const double scale_t = length / c_p;
+  while (solver.time() < model.run.end_time) {
+    solver.limit_next_step(model.run.end_time - solver.time());
+    solver.step();
+    const double t = solver.time() / scale_t;
+    const double v_in = std::abs(solver.velocity()[g_in * D + static_cast<std::size_t>(along)]);
+    const double v_out = std::abs(solver.velocity()[g_out * D + static_cast<std::size_t>(along)]);
+    const double v_sph = std::abs(pa.velocity[g_sph][along]);
+    if (t < 0.35) r.incident = std::max(r.incident, v_in);
+    else if (t < 1.0) r.reflected_fem_to_sph = std::max(r.reflected_fem_to_sph, v_in);
+    else if (t > 1.2) r.reflected_sph_to_fem = std::max(r.reflected_sph_to_fem, v_in);
+    r.in_particles = std::max(r.in_particles, v_sph);
+    r.transmitted = std::max(r.transmitted, v_out);
+    const EnergyBalance& e = solver.energy();
+    const double total = e.kinetic + e.internal + e.hourglass;
+    if (e_start == 0.0 && solver.time() >= t_start) e_start = total, w_start = e.boundary_work;
+    if (r.energy_change == 0.0 && solver.time() >= t_stop) {
+      r.energy_change = (total - e_start) / e_start;
+      r.join_work = (e.boundary_work - w_start) / e_start;
+    }
+  }
+  return r;
+}
+
+}  // namespace camouflet::test

@@ -41,7 +41,13 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     v->assign(nn * D, 0.0);
   node_mass_.assign(nn, 0.0);
 
-  elements_ = FemElements<D>(mesh, mode_, position_);
+  if (model.particles.count() > 0)  // refuse rather than silently drop them
+    throw InputError(model.run.where, "SPH particles are not handled by this solver yet (SPH issue)");
+  try {
+    elements_ = FemElements<D>(mesh, mode_, position_);
+  } catch (const InputError& e) {  // name the case file the mesh came from
+    throw InputError(SourceLocation{model.case_file, 0, 0, "mesh"}, e.message());
+  }
   const std::size_t ne = elements_.size();
 
   // Elements -> material batches.

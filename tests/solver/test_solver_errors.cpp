@@ -147,3 +147,27 @@ TEST(RunModel, DeterministicForAGivenThreadCount) {
   EXPECT_GT(largest, 0.0);
   EXPECT_LT(difference, 1e-12 * largest);
 }
+
+TEST(SolverErrors, WhatTheSolverCannotDoIsRefusedNotDropped) {
+  test::use_threads(1);
+  Model with_particles = small_block();
+  with_particles.particles.coordinates = {0.5, 2.0};
+  with_particles.particles.volume = {1e-3};
+  with_particles.particles.spacing = {0.1};
+  with_particles.particles.particle_part = {0};
+  EXPECT_THROW(Solver<2> solver(with_particles), InputError);
+
+  Model axis_in_plane_strain = small_block();
+  BoundaryCondition axis;
+  axis.kind = BoundaryKind::axis;
+  axis.set = "block.xmin";
+  axis_in_plane_strain.boundaries.push_back(axis);
+  EXPECT_THROW(Solver<2> solver(axis_in_plane_strain), InputError);
+
+  Model transmitting = small_block();
+  BoundaryCondition t;
+  t.kind = BoundaryKind::transmitting;
+  t.set = "block.xmax";
+  transmitting.boundaries.push_back(t);
+  EXPECT_THROW(Solver<2> solver(transmitting), InputError);
+}

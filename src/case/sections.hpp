@@ -15,6 +15,7 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
 void read_boundaries(TomlReader& root, Model& model);
 void read_gauges(TomlReader& root, Model& model);
 void read_detonations(TomlReader& root, Model& model);
+void read_checkpoint(TomlReader& checkpoint, Model& model);
 
 // Densities, element shapes (corner Jacobians), gauges inside the mesh.
 void check_model(const Model& model);

@@ -34,6 +34,8 @@ struct RunOutput::Impl {
   double next_field = 0.0, next_gauge = 0.0;
   std::int64_t last_field_cycle = -1, last_gauge_cycle = -1;
   std::vector<double> row;
+  std::vector<double> snapshot_times;  // s, of each snapshot written (the .pvd is rebuilt from them)
+  bool restarting = false;             // write nothing until the checkpoint is loaded
 
   explicit Impl(const Model& m) : model(m) {}
 
@@ -65,6 +67,7 @@ struct RunOutput::Impl {
       pvd.add(s.time, 1, particle_file);
     }
     ++snapshots;
+    snapshot_times.push_back(s.time);
     pvd.write(dir / "fields.pvd");
   }
 };
@@ -87,6 +90,14 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
   }
 
   o.dir = options.output_dir;
+  o.next_field = model.output.field_interval;
+  o.next_gauge = model.output.gauge_interval;
+  o.restarting = !options.restart.empty();
+  if (o.restarting) {
+    // visit_state() restores the schedule and rows and reopens the files.
+    if (!o.dir.empty()) fs::create_directories(o.dir);
+    return;
+  }
   if (!o.dir.empty()) {
     fs::create_directories(o.dir);
     if (!model.case_file.empty() && fs::is_regular_file(model.case_file))
@@ -95,8 +106,6 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
       o.csv.push_back(
           std::make_unique<GaugeCsv>(o.dir / (ser.group + ".csv"), ser.gauge_names, ser.quantities));
   }
-  o.next_field = model.output.field_interval;
-  o.next_gauge = model.output.gauge_interval;
   o.snapshot(initial);
   o.sample(initial);
 }
@@ -128,6 +137,63 @@ void RunOutput::finish(const FieldSnapshot& final_state, const RunSummary& summa
 
 const std::vector<RunOutput::GaugeSeries>& RunOutput::gauges() const {
   return impl_->series;
+}
+
+}  // namespace camouflet
+
+namespace camouflet {
+
+void RunOutput::visit_state(StateVisitor& v) {
+  Impl& o = *impl_;
+  StateScope scope(v, "output");
+  visit(v, "snapshots", o.snapshots);
+  visit(v, "next_field", o.next_field);
+  visit(v, "next_gauge", o.next_gauge);
+  visit(v, "last_field_cycle", o.last_field_cycle);
+  visit(v, "last_gauge_cycle", o.last_gauge_cycle);
+  visit(v, "snapshot_times", o.snapshot_times);
+  for (std::size_t g = 0; g < o.series.size(); ++g) {
+    GaugeSeries& ser = o.series[g];
+    StateScope group(v, "gauges." + ser.group);
+    visit(v, "time", ser.time);
+    for (std::size_t q = 0; q < ser.quantities.size(); ++q)
+      for (std::size_t p = 0; p < ser.gauge_names.size(); ++p)
+        visit(v, ser.gauge_names[p] + "." + ser.quantities[q], ser.values[q][p]);
+  }
+  if (!v.loading() || o.dir.empty()) return;
+
+  // The .pvd lists the snapshots up to the checkpoint; later ones are overwritten as the run goes on.
+  o.pvd = PvdIndex();
+  const bool mesh = o.model.mesh.element_count() > 0, particles = o.model.particles.count() > 0;
+  for (std::size_t k = 0; k < o.snapshot_times.size(); ++k) {
+    if (mesh) o.pvd.add(o.snapshot_times[k], 0, fmt::format("fields_{:04}.vtu", k));
+    if (particles) o.pvd.add(o.snapshot_times[k], 1, fmt::format("particles_{:04}.vtu", k));
+  }
+  if (!o.snapshot_times.empty()) o.pvd.write(o.dir / "fields.pvd");
+
+  // Each CSV is rewritten from the restored rows (the same digits the run
+  // wrote), so rows written after the checkpoint are not duplicated, then continued.
+  o.csv.clear();
+  for (std::size_t g = 0; g < o.series.size(); ++g) {
+    const GaugeSeries& ser = o.series[g];
+    const fs::path path = o.dir / (ser.group + ".csv");
+    fs::path tmp = path;
+    tmp += ".tmp";
+    {
+      GaugeCsv rewrite(tmp, ser.gauge_names, ser.quantities);
+      std::vector<double> row;
+      for (std::size_t k = 0; k < ser.time.size(); ++k) {
+        row.clear();
+        for (std::size_t p = 0; p < ser.gauge_names.size(); ++p)
+          for (std::size_t q = 0; q < ser.quantities.size(); ++q) row.push_back(ser.values[q][p][k]);
+        rewrite.write_row(ser.time[k], row);
+      }
+      rewrite.close();
+    }
+    fs::rename(tmp, path);
+    o.csv.push_back(std::make_unique<GaugeCsv>(path));
+  }
+  o.restarting = false;
 }
 
 }  // namespace camouflet

@@ -7,7 +7,11 @@
 #include <cmath>
 #include <optional>
 
+#include <filesystem>
+
 #include "output/run_output.hpp"
+#include "solver/interrupt.hpp"
+#include "solver/run_checkpoints.hpp"
 #include "solver/solver.hpp"
 #if __has_include("output/progress.hpp")
 #include "output/progress.hpp"
@@ -26,6 +30,12 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   };
   Solver<D> solver(model);
   RunOutput output(model, options, solver.snapshot());
+  // Checkpoints and restarts (issue 9): the solver's state, then the output's.
+  RunCheckpoints checkpoints(model, options, [&solver, &output](StateVisitor& v) {
+    solver.visit_state(v);
+    output.visit_state(v);
+  });
+  if (!options.restart.empty()) checkpoints.restart();
 #ifdef CAMOUFLET_HAS_PROGRESS
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
@@ -54,6 +64,15 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.limit_next_step(run.end_time - solver.time());
       solver.step();
       output.after_cycle(solver.snapshot());
+      if (const int signal = stop_requested()) {
+        checkpoints.write(solver.cycle(), solver.time());
+        summarise(fmt::format("interrupted by signal {}", signal), true);
+        output.finish(solver.snapshot(), summary);
+        throw RunInterrupted(signal, fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
+                                                 signal, solver.cycle(), solver.time(),
+                                                 checkpoints.dir().string()));
+      }
+      if (checkpoints.due(solver.cycle())) checkpoints.write(solver.cycle(), solver.time());
       const EnergyBalance& energy = solver.energy();
 #ifdef CAMOUFLET_HAS_PROGRESS
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
@@ -71,13 +90,25 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
 #ifdef CAMOUFLET_HAS_PROGRESS
     progress.done();
 #endif
+    checkpoints.write_failure(solver.cycle(), solver.time());
     summarise(error.what(), true);
     output.finish(solver.snapshot(), summary);
+    throw;
+  } catch (const std::filesystem::filesystem_error&) {
+    // Output failed (disk full, folder gone): one last checkpoint attempt, then exit code 3.
+#ifdef CAMOUFLET_HAS_PROGRESS
+    progress.done();
+#endif
+    checkpoints.try_write(solver.cycle(), solver.time());
     throw;
   }
 #ifdef CAMOUFLET_HAS_PROGRESS
   progress.done();
 #endif
+  // The final state, so that a later run can go on with a later end time or
+  // more cycles; written before finish() adds its closing row and snapshot,
+  // which the continued run would not have.
+  if (model.checkpoint.enabled()) checkpoints.write(solver.cycle(), solver.time());
   summarise(reason, false);
   output.finish(solver.snapshot(), summary);
   return summary;

@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "core/sym_tensor.hpp"
 #include "core/vec.hpp"
 #include "materials/material.hpp"
@@ -131,6 +132,9 @@ class SphSystem {
   // Particle fields of a FieldSnapshot (spans into this object).
   void fill_snapshot(FieldSnapshot& snapshot) const;
   const NeighbourSearch<D>& neighbours() const { return search_; }
+
+  // Every array and scalar a restart needs (checkpoints, issue 9; sph_state.cpp).
+  void visit_state(StateVisitor& visitor);
 
  private:
   void prepare_neighbours();

@@ -122,5 +122,25 @@ TEST(KillSafety, SigtermWritesCheckpointAndExits130AndRestartIsBitIdentical) {
   test::expect_same_final_state(root / "full", out);
 }
 
+// A full disk half way (the second snapshot goes to /dev/full): exit 3 with a
+// clear message, after a last checkpoint that a restart can use.
+TEST(IoFailure, FullDiskStopsWithExitThreeAfterALastCheckpoint) {
+  const fs::path root = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "full-disk";
+  fs::remove_all(root);
+  const fs::path case_file = root / "case.toml";
+  test::write_text(case_file, test::restart_fem_case());
+  const fs::path out = root / "out";
+  fs::create_directories(out);
+  fs::create_symlink("/dev/full", out / "fields_0001.vtu.tmp");
+  const auto r = test::run_camouflet("run --quiet -t 1 '" + case_file.string() + "' -o '" + out.string() + "'");
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("error: I/O failure: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
+  const auto list = list_checkpoints(out / "checkpoints");
+  ASSERT_FALSE(list.empty()) << r.output;
+  EXPECT_NO_THROW(read_checkpoint(list.front()));
+  expect_complete_lines(out / "axis.csv");
+}
+
 }  // namespace
 }  // namespace camouflet

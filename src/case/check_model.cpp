@@ -2,6 +2,7 @@
 // checked before the first cycle"): what no single section can see alone.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "case/sections.hpp"
@@ -69,12 +70,30 @@ void check_elements(const Model& model) {
   }
 }
 
+// A gauge outside every element may still follow a particle (output/gauges):
+// accept it within two initial spacings of one, a radius inside any kernel
+// support (2h with h >= spacing).
+bool near_particle(const Model& model, std::span<const double> x) {
+  const ParticleSet& p = model.particles;
+  const auto dim = static_cast<std::size_t>(model.dimension());
+  const std::size_t n = std::min({p.count(), p.spacing.size(), p.coordinates.size() / dim});
+  for (std::size_t i = 0; i < n; ++i) {
+    double d2 = 0.0;
+    for (std::size_t k = 0; k < dim; ++k) {
+      const double d = p.coordinates[i * dim + k] - x[k];
+      d2 += d * d;
+    }
+    if (std::sqrt(d2) <= 2.0 * p.spacing[i]) return true;
+  }
+  return false;
+}
+
 void check_gauges(const Model& model) {
   const FemMesh& mesh = model.mesh;
   for (const auto& group : model.gauges)
     for (const auto& g : group.points) {
-      const std::span<const double> x(g.position.data(), static_cast<std::size_t>(mesh.dimension));
-      if (!locate_point(mesh.dimension, mesh.coordinates, mesh.connectivity, x))
+      const std::span<const double> x(g.position.data(), static_cast<std::size_t>(model.dimension()));
+      if (!locate_point(mesh.dimension, mesh.coordinates, mesh.connectivity, x) && !near_particle(model, x))
         throw InputError(g.where, fmt::format("gauge '{}' of group '{}' at ({}) lies outside the mesh",
                                               g.name, group.name, fmt::join(x.begin(), x.end(), ", ")));
     }

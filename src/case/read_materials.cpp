@@ -1,6 +1,8 @@
 // [materials.NAME] with its eos / strength / damage blocks, or a preset.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "case/sections.hpp"
 #include "materials/registry.hpp"
 
@@ -18,7 +20,12 @@ Parameters block_parameters(TomlReader& material, const char* key) {
 }  // namespace
 
 void read_materials(TomlReader& materials, Model& model) {
-  for (const std::string& name : materials.keys()) {
+  // In the order of the file (TOML tables are unordered): material indices
+  // in the output then follow the case as written.
+  std::vector<std::pair<int, std::string>> ordered;
+  for (const std::string& name : materials.keys()) ordered.emplace_back(materials.where(name).line, name);
+  std::sort(ordered.begin(), ordered.end());
+  for (const auto& [line, name] : ordered) {
     auto material = materials.table(name);
     check_name(materials, name, name);
     const SourceLocation preset_where = material->where("preset");

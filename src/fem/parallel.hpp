@@ -1,8 +1,10 @@
 #pragma once
-// Loops shorter than this run on one thread: below it the cost of waking a
-// team (worse on a loaded machine) exceeds the work.
+// Loops shorter than these run on one thread: below them the cost of waking a
+// team (much worse on a loaded machine) exceeds the work. Node loops do a few
+// flops per item, element loops a few hundred.
 #include <cstdint>
 
 namespace camouflet {
-inline constexpr std::int64_t parallel_threshold = 2048;
+inline constexpr std::int64_t parallel_threshold = 2048;         // elements
+inline constexpr std::int64_t parallel_threshold_nodes = 32768;  // nodes (or node values)
 }  // namespace camouflet

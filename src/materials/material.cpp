@@ -37,7 +37,7 @@ void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
 
   // Objective stress rate (Jaumann) and the first half of the deviatoric work,
   // then the energy predictor: e* = e_n - (p_n + q) dv + s_n:D dt / rho.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 2048)  // small batches: one thread
   for (std::size_t i = 0; i < n; ++i) {
     pts.deviator[i] += jaumann_increment(pts.deviator[i], pts.spin[i], dt);
     const double rho = pts.density[i];
@@ -52,7 +52,7 @@ void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
 
   // Corrector: trapezoidal p dv with the predicted pressure; the deviatoric
   // work is completed after the strength update below.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 2048)  // small batches: one thread
   for (std::size_t i = 0; i < n; ++i) {
     const double rho = pts.density[i];
     const double rho_mid = 0.5 * (rho + pts.density_previous[i]);
@@ -66,13 +66,13 @@ void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
 
   if (strength_) {
     strength_->update(pts, ctx);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 2048)  // small batches: one thread
     for (std::size_t i = 0; i < n; ++i) {
       const double rho_mid = 0.5 * (pts.density[i] + pts.density_previous[i]);
       pts.specific_energy[i] += 0.5 * dt * contract(pts.deviator[i], pts.strain_rate[i]) / rho_mid;
     }
   } else {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 2048)  // small batches: one thread
     for (std::size_t i = 0; i < n; ++i) pts.deviator[i] = SymTensor{};
   }
   if (damage_) damage_->update(pts, ctx);

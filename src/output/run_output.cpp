@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <system_error>
 
 #include "output/gauge_csv.hpp"
 #include "output/gauges.hpp"
@@ -21,6 +23,11 @@ namespace {
 // Sampling instants are compared with a relative slack so that an interval
 // that is an exact multiple of dt is not missed by round-off.
 constexpr double time_slack = 1e-9;
+// When a folder is written, the CSVs hold every sample; the in-memory
+// histories (gauges()) then stop growing at this many values (1 GiB), so a
+// long run sampling every cycle cannot exhaust memory. Peaks for the summary
+// are kept sample by sample and stay exact.
+constexpr std::size_t memory_values_limit = std::size_t{1} << 27;
 }  // namespace
 
 struct RunOutput::Impl {
@@ -28,6 +35,9 @@ struct RunOutput::Impl {
   fs::path dir;  // empty: sample only, write nothing
   std::vector<std::vector<LocatedGauge>> located;
   std::vector<GaugeSeries> series;
+  std::vector<GroupPeaks> peaks;
+  std::vector<std::size_t> samples;  // rows taken per group (written to the CSV)
+  std::size_t values_in_memory = 0;
   std::vector<std::unique_ptr<GaugeCsv>> csv;
   PvdIndex pvd;
   int snapshots = 0;
@@ -44,10 +54,16 @@ struct RunOutput::Impl {
       row.clear();
       for (const auto& gauge : located[g]) sample_gauge(gauge, s, row);
       auto& ser = series[g];
-      ser.time.push_back(s.time);
-      const std::size_t nq = ser.quantities.size();
-      for (std::size_t p = 0; p < located[g].size(); ++p)
-        for (std::size_t q = 0; q < nq; ++q) ser.values[q][p].push_back(row[p * nq + q]);
+      const std::size_t nq = ser.quantities.size(), np = located[g].size();
+      for (std::size_t p = 0; p < np; ++p)
+        for (std::size_t q = 0; q < nq; ++q) peaks[g].add(q * np + p, row[p * nq + q], s.time);
+      ++samples[g];
+      if (dir.empty() || values_in_memory + row.size() <= memory_values_limit) {
+        ser.time.push_back(s.time);
+        for (std::size_t p = 0; p < np; ++p)
+          for (std::size_t q = 0; q < nq; ++q) ser.values[q][p].push_back(row[p * nq + q]);
+        values_in_memory += row.size() + 1;
+      }
       if (!dir.empty()) csv[g]->write_row(s.time, row);
     }
     last_gauge_cycle = s.cycle;
@@ -87,6 +103,8 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
     ser.values.assign(quantities.size(), std::vector<std::vector<double>>(group.points.size()));
     o.located.push_back(std::move(located));
     o.series.push_back(std::move(ser));
+    o.peaks.emplace_back();
+    o.samples.push_back(0);
   }
 
   o.dir = options.output_dir;
@@ -132,7 +150,7 @@ void RunOutput::finish(const FieldSnapshot& final_state, const RunSummary& summa
   if (o.last_field_cycle != final_state.cycle) o.snapshot(final_state);
   if (o.dir.empty()) return;
   for (auto& c : o.csv) c->close();
-  write_file_atomically(o.dir / "summary.json", summary_json(o.model, summary, o.series));
+  write_file_atomically(o.dir / "summary.json", summary_json(o.model, summary, o.series, o.peaks, o.samples));
 }
 
 const std::vector<RunOutput::GaugeSeries>& RunOutput::gauges() const {
@@ -142,6 +160,25 @@ const std::vector<RunOutput::GaugeSeries>& RunOutput::gauges() const {
 }  // namespace camouflet
 
 namespace camouflet {
+
+namespace {
+// Keeps the first `lines` lines of a text file (throws when it has fewer).
+void truncate_lines(const fs::path& path, std::size_t lines) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw fs::filesystem_error("cannot reopen gauge CSV", path, std::make_error_code(std::errc::io_error));
+  std::uintmax_t offset = 0;
+  std::size_t seen = 0;
+  for (int c; seen < lines && (c = std::fgetc(f)) != EOF;) {
+    ++offset;
+    if (c == '\n') ++seen;
+  }
+  std::fclose(f);
+  if (seen < lines)
+    throw fs::filesystem_error("gauge CSV holds fewer rows than the checkpoint", path,
+                               std::make_error_code(std::errc::io_error));
+  fs::resize_file(path, offset);
+}
+}  // namespace
 
 void RunOutput::visit_state(StateVisitor& v) {
   Impl& o = *impl_;
@@ -159,7 +196,32 @@ void RunOutput::visit_state(StateVisitor& v) {
     for (std::size_t q = 0; q < ser.quantities.size(); ++q)
       for (std::size_t p = 0; p < ser.gauge_names.size(); ++p)
         visit(v, ser.gauge_names[p] + "." + ser.quantities[q], ser.values[q][p]);
+    // Running peaks (summary.json) and the rows written, which the in-memory series may not all hold.
+    GroupPeaks& peaks = o.peaks[g];
+    std::vector<double> peak_value, peak_time;
+    std::vector<int> seen;
+    for (std::size_t k = 0; k < peaks.peaks.size(); ++k) {
+      peak_value.push_back(peaks.peaks[k].value);
+      peak_time.push_back(peaks.peaks[k].time);
+      seen.push_back(k < peaks.seen.size() && peaks.seen[k] ? 1 : 0);
+    }
+    visit(v, "peak_value", peak_value);
+    visit(v, "peak_time", peak_time);
+    visit(v, "peak_seen", seen);
+    if (v.loading()) {
+      peaks.peaks.resize(peak_value.size());
+      peaks.seen.assign(seen.size(), false);
+      for (std::size_t k = 0; k < peak_value.size() && k < peak_time.size(); ++k)
+        peaks.peaks[k] = {peak_value[k], peak_time[k]};
+      for (std::size_t k = 0; k < seen.size(); ++k) peaks.seen[k] = seen[k] != 0;
+    }
+    std::uint64_t samples = o.samples[g];
+    visit(v, "samples", samples);
+    o.samples[g] = samples;
   }
+  std::uint64_t in_memory = o.values_in_memory;
+  visit(v, "values_in_memory", in_memory);
+  o.values_in_memory = in_memory;
   if (!v.loading() || o.dir.empty()) return;
 
   // The .pvd lists the snapshots up to the checkpoint; later ones are overwritten as the run goes on.
@@ -171,12 +233,19 @@ void RunOutput::visit_state(StateVisitor& v) {
   }
   if (!o.snapshot_times.empty()) o.pvd.write(o.dir / "fields.pvd");
 
-  // Each CSV is rewritten from the restored rows (the same digits the run
-  // wrote), so rows written after the checkpoint are not duplicated, then continued.
+  // Each CSV is cut back to the rows of the checkpoint, so rows written after
+  // it are not duplicated, then continued. When memory holds every row the
+  // file is rewritten from them (the same digits the run wrote), which also
+  // repairs a damaged or missing file; otherwise it is truncated in place.
   o.csv.clear();
   for (std::size_t g = 0; g < o.series.size(); ++g) {
     const GaugeSeries& ser = o.series[g];
     const fs::path path = o.dir / (ser.group + ".csv");
+    if (ser.time.size() != o.samples[g]) {
+      truncate_lines(path, o.samples[g] + 1);
+      o.csv.push_back(std::make_unique<GaugeCsv>(path));
+      continue;
+    }
     fs::path tmp = path;
     tmp += ".tmp";
     {

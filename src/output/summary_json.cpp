@@ -55,8 +55,21 @@ Peak peak_of(const std::vector<double>& values, const std::vector<double>& time)
   return p;
 }
 
+void GroupPeaks::add(std::size_t index, double value, double time) {
+  if (index >= peaks.size()) {
+    peaks.resize(index + 1);
+    seen.resize(index + 1, false);
+  }
+  // A NaN sample never displaces a number, and any number displaces a NaN.
+  if (!seen[index] || std::isnan(peaks[index].value) || std::abs(value) > std::abs(peaks[index].value)) {
+    peaks[index] = {value, time};
+    seen[index] = true;
+  }
+}
+
 std::string summary_json(const Model& model, const RunSummary& s,
-                         const std::vector<RunOutput::GaugeSeries>& gauges) {
+                         const std::vector<RunOutput::GaugeSeries>& gauges,
+                         const std::vector<GroupPeaks>& peaks, const std::vector<std::size_t>& samples) {
   std::string b;
   auto out = std::back_inserter(b);
   const EnergyBalance& e = s.energy;
@@ -80,11 +93,12 @@ std::string summary_json(const Model& model, const RunSummary& s,
   for (std::size_t gi = 0; gi < gauges.size(); ++gi) {
     const auto& g = gauges[gi];
     fmt::format_to(out, "{}\n    {}: {{\n      \"csv\": {},\n      \"samples\": {},\n      \"peaks\": {{",
-                   gi ? "," : "", json_string(g.group), json_string(g.group + ".csv"), g.time.size());
+                   gi ? "," : "", json_string(g.group), json_string(g.group + ".csv"), samples[gi]);
     for (std::size_t p = 0; p < g.gauge_names.size(); ++p) {
       fmt::format_to(out, "{}\n        {}: {{", p ? "," : "", json_string(g.gauge_names[p]));
       for (std::size_t q = 0; q < g.quantities.size(); ++q) {
-        const Peak pk = peak_of(g.values[q][p], g.time);
+        const std::size_t k = q * g.gauge_names.size() + p;
+        const Peak pk = k < peaks[gi].peaks.size() ? peaks[gi].peaks[k] : Peak{};
         fmt::format_to(out, "{}\n          {}: {{\"peak\": {}, \"time_s\": {}}}", q ? "," : "",
                        json_string(g.quantities[q]), number(pk.value), number(pk.time));
       }

@@ -9,14 +9,11 @@
 
 #include <filesystem>
 
+#include "output/progress.hpp"
 #include "output/run_output.hpp"
 #include "solver/interrupt.hpp"
 #include "solver/run_checkpoints.hpp"
 #include "solver/solver.hpp"
-#if __has_include("output/progress.hpp")
-#include "output/progress.hpp"
-#define CAMOUFLET_HAS_PROGRESS 1
-#endif
 
 namespace camouflet {
 
@@ -36,10 +33,8 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     output.visit_state(v);
   });
   if (!options.restart.empty()) checkpoints.restart();
-#ifdef CAMOUFLET_HAS_PROGRESS
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
-#endif
   RunSummary summary;
   const auto summarise = [&](std::string reason, bool failed) {
     summary.time = solver.time();
@@ -74,10 +69,8 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       }
       if (checkpoints.due(solver.cycle())) checkpoints.write(solver.cycle(), solver.time());
       const EnergyBalance& energy = solver.energy();
-#ifdef CAMOUFLET_HAS_PROGRESS
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());
-#endif
       if (energy.relative_error > run.energy_error_limit) {
         NumericalError error(EntityKind::model, 0, "energy balance",
                              fmt::format("relative energy error {:.3e} exceeds energy_error_limit {:.3e}",
@@ -87,24 +80,18 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       }
     }
   } catch (const NumericalError& error) {
-#ifdef CAMOUFLET_HAS_PROGRESS
     progress.done();
-#endif
     checkpoints.write_failure(solver.cycle(), solver.time());
     summarise(error.what(), true);
     output.finish(solver.snapshot(), summary);
     throw;
   } catch (const std::filesystem::filesystem_error&) {
     // Output failed (disk full, folder gone): one last checkpoint attempt, then exit code 3.
-#ifdef CAMOUFLET_HAS_PROGRESS
     progress.done();
-#endif
     checkpoints.try_write(solver.cycle(), solver.time());
     throw;
   }
-#ifdef CAMOUFLET_HAS_PROGRESS
   progress.done();
-#endif
   // The final state, so that a later run can go on with a later end time or
   // more cycles; written before finish() adds its closing row and snapshot,
   // which the continued run would not have.

@@ -199,7 +199,7 @@ void Solver<D>::advance_velocities() {
   // Leapfrog with variable steps: the impulse at t_n spans the mean of the two half steps.
   const double dt_mean = 0.5 * (dt_ + dt_next_);
   const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
-#pragma omp parallel for schedule(static) if (nn > parallel_threshold)
+#pragma omp parallel for schedule(static) if (nn > parallel_threshold_nodes)
   for (std::int64_t n = 0; n < nn; ++n) {
     const double inv_m =
         node_mass_[static_cast<std::size_t>(n)] > 0.0 ? 1.0 / node_mass_[static_cast<std::size_t>(n)] : 0.0;
@@ -235,7 +235,7 @@ void Solver<D>::account_energy() {
   const bool hourglass = !hourglass_force_.empty();
   const double dt_minus = dt_, dt_mean = 0.5 * (dt_ + dt_next_);
   double kinetic = 0.0, hourglass_power = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) if (nn > parallel_threshold)
+#pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) if (nn > parallel_threshold_nodes)
   for (std::int64_t n = 0; n < nn; ++n) {
     double vv = 0.0, fv = 0.0;
     for (int i = 0; i < D; ++i) {
@@ -264,7 +264,7 @@ void Solver<D>::advance_positions() {
   const double dt = dt_next_;
   if (particles_) particles_->drift(dt);
   const std::int64_t n = static_cast<std::int64_t>(position_.size());
-#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+#pragma omp parallel for schedule(static) if (n > parallel_threshold_nodes)
   for (std::int64_t k = 0; k < n; ++k) {
     const double dx = velocity_[static_cast<std::size_t>(k)] * dt;
     position_[static_cast<std::size_t>(k)] += dx;

@@ -184,3 +184,47 @@ points = [{ name = "c", position = [0.5, 0.5, 0.5] }]
 
 }  // namespace
 }  // namespace camouflet
+
+#include "materials/registry.hpp"
+
+namespace camouflet {
+namespace {
+
+// A preset for this test only: its blocks lie under the case's, so keys the
+// case gives win and the rest come from the preset.
+MaterialPreset test_preset() {
+  MaterialPreset p;
+  p.description = "test only";
+  p.eos.set_string("type", "linear");
+  p.eos.set_number("density", 2500.0);
+  p.eos.set_number("bulk_modulus", 1e10);
+  p.strength.set_string("type", "elastic");
+  p.strength.set_number("shear_modulus", 5e9);
+  return p;
+}
+CAMOUFLET_REGISTER_PRESET("test_case_reader_rock", test_preset);
+
+TEST(CaseReader, PresetWithOverride) {
+  const Model m = read_case_text(R"([run]
+end_time = 1.0
+[materials.rock]
+preset = "test_case_reader_rock"
+eos = { density = 2600.0 }
+[materials.plain]
+preset = "test_case_reader_rock"
+[[parts]]
+name = "p"
+material = "rock"
+block = { size = [1, 1], cells = [1, 1] }
+)",
+                                 here);
+  ASSERT_EQ(m.materials.size(), 2u);
+  EXPECT_EQ(m.materials[0].name, "rock");  // in the order of the file
+  EXPECT_EQ(m.materials[0].material->reference_density(), 2600.0);
+  EXPECT_EQ(m.materials[1].material->reference_density(), 2500.0);
+  ASSERT_NE(m.materials[0].material->strength(), nullptr);
+  EXPECT_EQ(m.materials[0].material->strength()->type(), "elastic");
+}
+
+}  // namespace
+}  // namespace camouflet

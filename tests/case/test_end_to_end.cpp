@@ -64,9 +64,9 @@ TEST(EndToEnd, ElasticColumnExample) {
   EXPECT_GT(rows, 200);  // every 50 us (or every cycle when dt is longer) over 12 ms
   const double rho = 2000.0, k = 6.6667e8, g = 4.0e8, v = 1.0;
   const double c_p = std::sqrt((k + 4.0 * g / 3.0) / rho);
-  // The peak includes the numerical overshoot at the front; 10 % bounds it on this 0.05 m mesh.
-  test::verify({"Example elastic column: peak gauge stress", "-rho c_p v (plane P-wave)", -rho * c_p * v,
-                peak, 0.10, true, "Pa"});
+  // The peak includes the overshoot behind the front: 2 % at y = 5 m on this 0.05 m mesh.
+  test::verify({"Example elastic column: peak gauge stress at y = 5 m", "-rho c_p v (plane P-wave)",
+                -rho * c_p * v, peak, 0.03, true, "Pa"});
 }
 
 }  // namespace

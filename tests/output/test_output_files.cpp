@@ -231,3 +231,49 @@ TEST(OutputFiles, UnwritableFolderIsAnIoError) {
 
 }  // namespace
 }  // namespace camouflet
+
+namespace camouflet {
+namespace {
+
+TEST(OutputFiles, RunningPeakKeepsLargestMagnitudeAndSkipsNaN) {
+  GroupPeaks p;
+  p.add(1, std::nan(""), 0.0);
+  p.add(1, 2.0, 1.0);
+  p.add(1, -3.0, 2.0);
+  p.add(1, std::nan(""), 3.0);
+  p.add(1, 2.5, 4.0);
+  EXPECT_EQ(p.peaks[1].value, -3.0);
+  EXPECT_EQ(p.peaks[1].time, 2.0);
+  EXPECT_EQ(json_string("a\"b\\c\n"), "\"a\\\"b\\\\c\\n\"");
+}
+
+}  // namespace
+}  // namespace camouflet
+
+namespace camouflet {
+namespace {
+
+TEST(OutputFiles, HexMeshSnapshot) {
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "hexes";
+  fs::remove_all(dir);
+  auto f = SnapshotFixture::distorted(3, 2);  // 27 nodes, 8 hexes
+  f.set_linear_fields(0.0);
+  Model model;
+  model.run.mode = GeometryMode::three_d;
+  RunOptions options;
+  options.output_dir = dir;
+  RunOutput out(model, options, f.view(0.0, 0));
+  out.finish(f.view(0.0, 0), RunSummary{});
+  const std::string text = slurp(dir / "fields_0000.vtu");
+  const XmlSummary x = parse_xml(text);
+  EXPECT_TRUE(x.well_formed);
+  EXPECT_EQ(x.points, 27);
+  EXPECT_EQ(x.cells, 8);
+  EXPECT_EQ(x.array_tokens.at("connectivity"), 8u * 8);
+  EXPECT_EQ(x.array_tokens.at("velocity"), 27u * 3);
+  EXPECT_NE(text.find("12 12 12 12 12 12 12 12"), std::string::npos);  // VTK_HEXAHEDRON
+  EXPECT_NE(text.find("8 16 24 32 40 48 56 64"), std::string::npos);   // end offsets
+}
+
+}  // namespace
+}  // namespace camouflet

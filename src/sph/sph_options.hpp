@@ -22,7 +22,10 @@ struct SphOptions {
   // Artificial stress against the tensile instability (Gray, Monaghan & Swift
   // 2001, CMAME 190, eqs. 3.1-3.3; Monaghan 2000, JCP 159): R = -eps sigma'/rho^2
   // on tensile principal stresses, weighted by (W(r)/W(dp))^n.
-  bool artificial_stress = true;
+  // Off by default: in a free elastic block breathing between tension and
+  // compression it pumped energy into the oscillation (its work is not in the
+  // energy equation here); see the SPH notes in the final report.
+  bool artificial_stress = false;
   double artificial_stress_epsilon = 0.3;
   double artificial_stress_power = 4.0;
   // Momentum/continuity pair (sph_system.hpp): true = volume form (Colagrossi &

@@ -86,7 +86,7 @@ void SphSystem<D>::compute_accelerations() {
 #pragma omp parallel for schedule(dynamic, 128)
   for (std::size_t i = 0; i < n; ++i) {
     Vec<D> acc{};
-    double heat = 0.0, mu_max = 0.0;
+    double mu_max = 0.0;
     int count = 0;
     for (const std::uint32_t j : search_.neighbours(i)) {
       const Vec<D> dx = x[i] - x[j];
@@ -114,12 +114,10 @@ void SphSystem<D>::compute_accelerations() {
         pair += (p_.tensile_term[i] + p_.tensile_term[j]) * std::pow(f, power);
       }
       acc += (contract_vector<D>(pair, grad) - grad * pi_ij) * m[j];
-      heat += 0.5 * m[j] * pi_ij * dot(dv, grad);
     }
     if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
       acc[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
     p_.acceleration[i] = acc;
-    p_.heating[i] = heat;
     p_.compression_rate[i] = mu_max;
     p_.neighbour_count[i] = count;
   }
@@ -128,9 +126,43 @@ void SphSystem<D>::compute_accelerations() {
 template <int D>
 void SphSystem<D>::kick(double dt) {
   const std::size_t n = p_.real;
-  velocity_old_.assign(p_.velocity.begin(), p_.velocity.begin() + static_cast<std::ptrdiff_t>(n));
+  velocity_old_.assign(p_.velocity.begin(), p_.velocity.end());  // particles and ghosts, v(n-1/2)
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p_.velocity[i] += p_.acceleration[i] * dt;
+  refresh_ghosts();
+
+  // Viscous heating of this impulse: the kinetic energy the viscous pair forces
+  // (evaluated with v(n-1/2) at x(n)) take out over the kick is
+  // 1/2 sum_ij m_i m_j Pi_ij vbar_ij . grad W dt with vbar the mean of the old
+  // and new velocities; each particle gets its half (Monaghan 1992, eq. 4.6)
+  // with that same mean velocity, so the exchange is exact.
+  const double alpha = options_.viscosity_alpha, beta = options_.viscosity_beta;
+  const auto& x = p_.position;
+  const auto& m = p_.mass;
+  const auto& eta = p_.planar_density;
+  const auto& h = p_.smoothing_length;
+  const auto& v_old = velocity_old_;
+  const auto& v_new = p_.velocity;
+#pragma omp parallel for schedule(dynamic, 128)
+  for (std::size_t i = 0; i < n; ++i) {
+    double heat = 0.0;
+    for (const std::uint32_t j : search_.neighbours(i)) {
+      const Vec<D> dx = x[i] - x[j];
+      const double r2 = dot(dx, dx);
+      const double hij = pair_smoothing_length(h[i], h[j]);
+      if (r2 >= support_factor * support_factor * hij * hij) continue;
+      const Vec<D> dv = v_old[i] - v_old[j];
+      const double vr = dot(dv, dx);
+      if (vr >= 0.0) continue;
+      const double mu = hij * vr / (r2 + 0.01 * hij * hij);
+      const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+      const double pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+      const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(std::sqrt(r2), hij));
+      const Vec<D> mean_dv = (dv + (v_new[i] - v_new[j])) * 0.5;
+      heat += 0.5 * m[j] * pi_ij * dot(mean_dv, grad);
+    }
+    p_.heating[i] += heat * dt;
+  }
 }
 
 template <int D>
@@ -229,6 +261,12 @@ void SphSystem<D>::update_state(double dt, double time) {
   const auto& h = p_.smoothing_length;
   std::vector<double> eta_new(n), h_new(n);
 
+  // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
+  // with v(n+1/2): second-order in time, and the p dV work then matches the
+  // kinetic energy the forces exchange far better than at x(n+1).
+  std::vector<Vec<D>> x_end(p_.position.begin(), p_.position.begin() + static_cast<std::ptrdiff_t>(n));
+  for (std::size_t i = 0; i < n; ++i) p_.position[i] -= p_.velocity[i] * (0.5 * dt);
+  refresh_ghosts();
   const bool corrected = options_.kernel_correction;
   if (corrected) compute_correction();
 #pragma omp parallel for schedule(dynamic, 128)
@@ -282,7 +320,10 @@ void SphSystem<D>::update_state(double dt, double time) {
   for (std::size_t i = 0; i < n; ++i) {
     p_.planar_density[i] = eta_new[i];
     p_.smoothing_length[i] = h_new[i];
+    p_.position[i] = x_end[i];
   }
+  refresh_ghosts();
+  correction_current_ = false;
 
   // The shared constitutive update, one batch per material.
   const MaterialContext ctx{dt, time};
@@ -300,7 +341,8 @@ void SphSystem<D>::update_state(double dt, double time) {
       pts.spin[k] = p_.spin[i];
       pts.artificial_viscosity[k] = 0.0;  // SPH viscosity is pairwise: its heating is added below
       pts.characteristic_length[k] = p_.smoothing_length[i];
-      pts.specific_energy[k] += dt * p_.heating[i];
+      pts.specific_energy[k] += p_.heating[i];
+      p_.heating[i] = 0.0;
       p_.density[i] = rho;
     }
     materials_[mat]->update(pts, ctx);

@@ -146,6 +146,8 @@ void SphSystem<D>::refresh_ghosts() {
     const MirrorPlane& plane = planes_[ghosts_[g].plane];
     p_.position[k] = mirror_position(p_.position[s], plane);
     p_.velocity[k] = mirror_velocity(p_.velocity[s], plane);
+    if (velocity_old_.size() == p_.velocity.size())
+      velocity_old_[k] = mirror_velocity(velocity_old_[s], plane);
     p_.mass[k] = p_.mass[s];
     p_.planar_density[k] = p_.planar_density[s];
     p_.smoothing_length[k] = p_.smoothing_length[s];
@@ -212,7 +214,7 @@ double SphSystem<D>::kinetic_energy() const {
 
 template <int D>
 double SphSystem<D>::centred_kinetic_energy() const {
-  if (velocity_old_.size() != p_.real) return kinetic_energy();
+  if (velocity_old_.size() < p_.real) return kinetic_energy();
   double e = 0.0;
   for (std::size_t i = 0; i < p_.real; ++i) e += 0.5 * p_.mass[i] * dot(velocity_old_[i], p_.velocity[i]);
   return e;

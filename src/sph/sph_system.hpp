@@ -83,7 +83,7 @@ struct ParticleArrays {
   std::vector<int> material;             // index into Model::materials
   std::vector<int> part;                 // index into Model::parts
   std::vector<std::uint32_t> slot;       // index in the material's batch
-  std::vector<double> heating;           // J/(kg s), artificial-viscosity heating rate
+  std::vector<double> heating;           // J/kg, artificial-viscosity heating of the last kick (pending)
   std::vector<double> compression_rate;  // 1/s, largest mu_ij (viscous time-step term)
   std::vector<int> neighbour_count;
   std::vector<SymTensor> strain_rate;  // 1/s

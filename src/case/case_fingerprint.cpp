@@ -1,5 +1,6 @@
 #include "case/case_fingerprint.hpp"
 
+#include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -28,7 +29,10 @@ void flatten(const toml::node& node, const std::string& key, std::vector<std::st
     if (a->empty()) out.push_back(key + " = []");
   } else {
     std::ostringstream value;
-    node.visit([&value](const auto& v) { value << v; });
+    if (const auto* f = node.as_floating_point())
+      value << fmt::format("{}", f->get());  // shortest form that reads back exactly
+    else
+      node.visit([&value](const auto& v) { value << v; });
     out.push_back(key + " = " + value.str());
   }
 }

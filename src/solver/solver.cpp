@@ -157,6 +157,7 @@ void Solver<D>::limit_next_step(double dt_max) {
 template <int D>
 void Solver<D>::step() {
   try {
+    check_nodes_and_particles();  // the state at t_n: a NaN is named before forces spread it
     add_forces();            // loads and element forces at t_n (SPH particle forces join here)
     advance_velocities();    // a = F / m, v(n+1/2) by the central difference
     constrain_velocities();  // fixed, prescribed, symmetry, axis at t_(n+1/2)

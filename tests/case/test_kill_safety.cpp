@@ -24,10 +24,10 @@ namespace {
 namespace fs = std::filesystem;
 using clock_type = std::chrono::steady_clock;
 
-// A run of about a second: 4000 quads, ~1000 cycles, a gauge row every cycle.
+// A run of a few seconds: 4000 quads, ~2600 cycles, a gauge row every cycle.
 std::string long_case() {
   std::string text = test::restart_fem_case("", "interval_cycles = 50\nkeep = 2\n");
-  text.replace(text.find("end_time = 0.004"), 16, "end_time = 0.008");
+  text.replace(text.find("end_time = 0.01"), 15, "end_time = 0.02");
   text.replace(text.find("cells = [4, 40]"), 15, "cells = [10, 400]");
   return text;
 }

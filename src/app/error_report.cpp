@@ -6,6 +6,8 @@
 #include <iostream>
 #include <new>
 
+#include "solver/interrupt.hpp"
+
 namespace camouflet::app {
 
 std::string format_input_error(const InputError& e) {
@@ -20,6 +22,9 @@ std::string format_input_error(const InputError& e) {
 int run_guarded(const std::function<int()>& body) {
   try {
     return body();
+  } catch (const RunInterrupted& e) {
+    std::cerr << "camouflet: " << e.what() << '\n';
+    return exit_interrupted;
   } catch (const InputError& e) {
     std::cerr << format_input_error(e) << '\n';
     return exit_bad_input;

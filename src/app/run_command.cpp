@@ -9,19 +9,26 @@
 
 #include "app/commands.hpp"
 #include "app/error_report.hpp"
+#include "case/case_fingerprint.hpp"
 #include "case/case_reader.hpp"
+#include "solver/interrupt.hpp"
 #include "solver/run.hpp"
 
 namespace camouflet::app {
 
 namespace {
 
-// Ctrl-C or a kill: every gauge row and snapshot written so far is already
-// complete on disk (rows are flushed one by one, snapshots renamed into
-// place), so the process ends at once with the documented status 130.
-// Only async-signal-safe calls here.
-extern "C" void on_interrupt(int) {
-  static const char message[] = "\ncamouflet: interrupted; output written so far is complete\n";
+// Ctrl-C or a kill: the first signal asks run_model() to write a checkpoint
+// after the current cycle and stop (exit 130, docs/exit-codes.md); a second
+// one ends the process at once (every gauge row and snapshot written so far
+// is complete on disk, the previous checkpoint intact). Only
+// async-signal-safe calls here.
+extern "C" void on_interrupt(int signal) {
+  if (stop_requested() == 0) {
+    request_stop(signal);
+    return;
+  }
+  static const char message[] = "\ncamouflet: interrupted again; output written so far is complete\n";
   [[maybe_unused]] const auto n = write(STDERR_FILENO, message, sizeof message - 1);
   _exit(exit_interrupted);
 }
@@ -31,6 +38,7 @@ struct RunArguments {
   std::string output_dir;
   bool quiet = false;
   int threads = 0;
+  std::string restart;
 };
 }  // namespace
 
@@ -41,17 +49,22 @@ void add_run_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("-o,--output", args->output_dir, "Output folder (default: results/<case name>)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   cmd->add_option("-t,--threads", args->threads, "OpenMP threads (default: all)")->check(CLI::PositiveNumber);
+  cmd->add_option("--restart", args->restart,
+                  "Continue from a checkpoint file, or 'latest' (the newest usable one in the output folder)");
   cmd->callback([args, &result] {
     result.exit_code = run_guarded([&] {
-      const Model model = read_case(args->case_file);
+      // Installed first: a signal while the case is read stops the run at its first cycle.
       std::signal(SIGINT, on_interrupt);
       std::signal(SIGTERM, on_interrupt);
+      const Model model = read_case(args->case_file);
       RunOptions options;
       options.output_dir = args->output_dir.empty() ? std::filesystem::path("results") /
                                                           std::filesystem::path(args->case_file).stem()
                                                     : std::filesystem::path(args->output_dir);
       options.progress = args->quiet ? ProgressStyle::none : ProgressStyle::automatic;
       options.threads = args->threads;
+      options.restart = args->restart;
+      options.case_fingerprint = case_fingerprint(args->case_file);
       if (args->threads > 0) omp_set_num_threads(args->threads);
       const RunSummary summary = run_model(model, options);
       if (!args->quiet)

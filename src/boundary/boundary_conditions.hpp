@@ -5,8 +5,10 @@
 // pressure loads on face sets added to the nodal forces. Both report the
 // work they do, for the energy balance.
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "model/model.hpp"
 
 namespace camouflet {
@@ -35,6 +37,9 @@ class BoundaryConditions {
 
   // The constraints alone (no work): used for the initial velocities.
   void constrain(double* v, double time) const;
+
+  // The forces of earlier cycles kept for the boundary work (checkpoints; boundary_state.cpp).
+  void visit_state(StateVisitor& visitor);
 
  private:
   struct Component {

@@ -23,6 +23,7 @@ Model build(const toml::table& doc, const std::filesystem::path& file) {
   if (!run) throw InputError(root.where("run"), "the case needs a [run] section with at least end_time");
   case_detail::read_run(*run, model);
   if (auto output = root.table("output")) case_detail::read_output(*output, model);
+  if (auto checkpoint = root.table("checkpoint")) case_detail::read_checkpoint(*checkpoint, model);
   if (auto materials = root.table("materials")) case_detail::read_materials(*materials, model);
   case_detail::read_parts(root, model, file.parent_path());
   case_detail::read_bars(root, model);

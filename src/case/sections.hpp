@@ -18,6 +18,7 @@ void read_boundaries(TomlReader& root, Model& model);
 void read_sph(TomlReader& sph, Model& model);
 void read_gauges(TomlReader& root, Model& model);
 void read_detonations(TomlReader& root, Model& model);
+void read_checkpoint(TomlReader& checkpoint, Model& model);
 
 // Reinforced concrete (case/read_reinforcement.cpp): a block part with
 // `rebar_layers`, the [[bars]] section, a material's `erosion` table.

@@ -40,6 +40,12 @@ struct RunControl {
   HourglassForm hourglass = HourglassForm::viscous;
   double hourglass_coefficient = 0.1;
   double energy_error_limit = std::numeric_limits<double>::infinity();  // relative; stop when exceeded
+  // Domain box (m; axisymmetric r, z): a node or particle leaving it stops the run. Unbounded by default.
+  std::array<double, 3> domain_min{-std::numeric_limits<double>::infinity(),
+                                   -std::numeric_limits<double>::infinity(),
+                                   -std::numeric_limits<double>::infinity()};
+  std::array<double, 3> domain_max{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                                   std::numeric_limits<double>::infinity()};
   SourceLocation where;
 };
 
@@ -47,6 +53,14 @@ struct OutputControl {
   double field_interval = 0.0;   // s between field snapshots; 0 = first and last only
   double gauge_interval = 0.0;   // s between gauge rows; 0 = every cycle
   double log_interval_s = 5.0;   // wall seconds between plain log lines when not on a terminal
+};
+
+// Checkpoints (the case's [checkpoint] block; docs/reliability.md).
+struct CheckpointControl {
+  std::int64_t interval_cycles = 0;  // cycles between checkpoints; 0 = none by cycles
+  double interval_wall_s = 0.0;      // wall seconds between checkpoints; 0 = none by wall time
+  int keep = 2;                      // checkpoints kept (the oldest are removed)
+  bool enabled() const { return interval_cycles > 0 || interval_wall_s > 0.0; }
 };
 
 // A FEM mesh: quad4 in 2-D, hex8 in 3-D. Node and element ids are 0-based
@@ -156,6 +170,7 @@ struct Model {
   std::string title;
   RunControl run;
   OutputControl output;
+  CheckpointControl checkpoint;
   std::vector<NamedMaterial> materials;
   std::vector<Part> parts;
   FemMesh mesh;

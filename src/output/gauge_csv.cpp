@@ -15,6 +15,8 @@ GaugeCsv::GaugeCsv(const std::filesystem::path& path, const std::vector<std::str
   file_.flush();
 }
 
+GaugeCsv::GaugeCsv(const std::filesystem::path& path) : file_(path, TextFile::Mode::append) {}
+
 void GaugeCsv::write_row(double time, const std::vector<double>& values) {
   line_.clear();
   // 17 significant digits: the row reproduces the double exactly (restart checks compare bit for bit).

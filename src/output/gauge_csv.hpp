@@ -14,6 +14,8 @@ class GaugeCsv {
  public:
   GaugeCsv(const std::filesystem::path& path, const std::vector<std::string>& gauge_names,
            const std::vector<std::string>& quantities);
+  // Reopens a complete CSV (header and whole rows) to append rows: restarts.
+  explicit GaugeCsv(const std::filesystem::path& path);
   // values[g * quantities + q]
   void write_row(double time, const std::vector<double>& values);
   void close() { file_.close(); }

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <system_error>
 
 #include "output/gauge_csv.hpp"
 #include "output/gauges.hpp"
@@ -42,6 +44,8 @@ struct RunOutput::Impl {
   double next_field = 0.0, next_gauge = 0.0;
   std::int64_t last_field_cycle = -1, last_gauge_cycle = -1;
   std::vector<double> row;
+  std::vector<double> snapshot_times;  // s, of each snapshot written (the .pvd is rebuilt from them)
+  bool restarting = false;             // write nothing until the checkpoint is loaded
 
   explicit Impl(const Model& m) : model(m) {}
 
@@ -79,6 +83,7 @@ struct RunOutput::Impl {
       pvd.add(s.time, 1, particle_file);
     }
     ++snapshots;
+    snapshot_times.push_back(s.time);
     pvd.write(dir / "fields.pvd");
   }
 };
@@ -103,6 +108,14 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
   }
 
   o.dir = options.output_dir;
+  o.next_field = model.output.field_interval;
+  o.next_gauge = model.output.gauge_interval;
+  o.restarting = !options.restart.empty();
+  if (o.restarting) {
+    // visit_state() restores the schedule and rows and reopens the files.
+    if (!o.dir.empty()) fs::create_directories(o.dir);
+    return;
+  }
   if (!o.dir.empty()) {
     fs::create_directories(o.dir);
     if (!model.case_file.empty() && fs::is_regular_file(model.case_file))
@@ -111,8 +124,6 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
       o.csv.push_back(
           std::make_unique<GaugeCsv>(o.dir / (ser.group + ".csv"), ser.gauge_names, ser.quantities));
   }
-  o.next_field = model.output.field_interval;
-  o.next_gauge = model.output.gauge_interval;
   o.snapshot(initial);
   o.sample(initial);
 }
@@ -144,6 +155,114 @@ void RunOutput::finish(const FieldSnapshot& final_state, const RunSummary& summa
 
 const std::vector<RunOutput::GaugeSeries>& RunOutput::gauges() const {
   return impl_->series;
+}
+
+}  // namespace camouflet
+
+namespace camouflet {
+
+namespace {
+// Keeps the first `lines` lines of a text file (throws when it has fewer).
+void truncate_lines(const fs::path& path, std::size_t lines) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw fs::filesystem_error("cannot reopen gauge CSV", path, std::make_error_code(std::errc::io_error));
+  std::uintmax_t offset = 0;
+  std::size_t seen = 0;
+  for (int c; seen < lines && (c = std::fgetc(f)) != EOF;) {
+    ++offset;
+    if (c == '\n') ++seen;
+  }
+  std::fclose(f);
+  if (seen < lines)
+    throw fs::filesystem_error("gauge CSV holds fewer rows than the checkpoint", path,
+                               std::make_error_code(std::errc::io_error));
+  fs::resize_file(path, offset);
+}
+}  // namespace
+
+void RunOutput::visit_state(StateVisitor& v) {
+  Impl& o = *impl_;
+  StateScope scope(v, "output");
+  visit(v, "snapshots", o.snapshots);
+  visit(v, "next_field", o.next_field);
+  visit(v, "next_gauge", o.next_gauge);
+  visit(v, "last_field_cycle", o.last_field_cycle);
+  visit(v, "last_gauge_cycle", o.last_gauge_cycle);
+  visit(v, "snapshot_times", o.snapshot_times);
+  for (std::size_t g = 0; g < o.series.size(); ++g) {
+    GaugeSeries& ser = o.series[g];
+    StateScope group(v, "gauges." + ser.group);
+    visit(v, "time", ser.time);
+    for (std::size_t q = 0; q < ser.quantities.size(); ++q)
+      for (std::size_t p = 0; p < ser.gauge_names.size(); ++p)
+        visit(v, ser.gauge_names[p] + "." + ser.quantities[q], ser.values[q][p]);
+    // Running peaks (summary.json) and the rows written, which the in-memory series may not all hold.
+    GroupPeaks& peaks = o.peaks[g];
+    std::vector<double> peak_value, peak_time;
+    std::vector<int> seen;
+    for (std::size_t k = 0; k < peaks.peaks.size(); ++k) {
+      peak_value.push_back(peaks.peaks[k].value);
+      peak_time.push_back(peaks.peaks[k].time);
+      seen.push_back(k < peaks.seen.size() && peaks.seen[k] ? 1 : 0);
+    }
+    visit(v, "peak_value", peak_value);
+    visit(v, "peak_time", peak_time);
+    visit(v, "peak_seen", seen);
+    if (v.loading()) {
+      peaks.peaks.resize(peak_value.size());
+      peaks.seen.assign(seen.size(), false);
+      for (std::size_t k = 0; k < peak_value.size() && k < peak_time.size(); ++k)
+        peaks.peaks[k] = {peak_value[k], peak_time[k]};
+      for (std::size_t k = 0; k < seen.size(); ++k) peaks.seen[k] = seen[k] != 0;
+    }
+    std::uint64_t samples = o.samples[g];
+    visit(v, "samples", samples);
+    o.samples[g] = samples;
+  }
+  std::uint64_t in_memory = o.values_in_memory;
+  visit(v, "values_in_memory", in_memory);
+  o.values_in_memory = in_memory;
+  if (!v.loading() || o.dir.empty()) return;
+
+  // The .pvd lists the snapshots up to the checkpoint; later ones are overwritten as the run goes on.
+  o.pvd = PvdIndex();
+  const bool mesh = o.model.mesh.element_count() > 0, particles = o.model.particles.count() > 0;
+  for (std::size_t k = 0; k < o.snapshot_times.size(); ++k) {
+    if (mesh) o.pvd.add(o.snapshot_times[k], 0, fmt::format("fields_{:04}.vtu", k));
+    if (particles) o.pvd.add(o.snapshot_times[k], 1, fmt::format("particles_{:04}.vtu", k));
+  }
+  if (!o.snapshot_times.empty()) o.pvd.write(o.dir / "fields.pvd");
+
+  // Each CSV is cut back to the rows of the checkpoint, so rows written after
+  // it are not duplicated, then continued. When memory holds every row the
+  // file is rewritten from them (the same digits the run wrote), which also
+  // repairs a damaged or missing file; otherwise it is truncated in place.
+  o.csv.clear();
+  for (std::size_t g = 0; g < o.series.size(); ++g) {
+    const GaugeSeries& ser = o.series[g];
+    const fs::path path = o.dir / (ser.group + ".csv");
+    if (ser.time.size() != o.samples[g]) {
+      truncate_lines(path, o.samples[g] + 1);
+      o.csv.push_back(std::make_unique<GaugeCsv>(path));
+      continue;
+    }
+    fs::path tmp = path;
+    tmp += ".tmp";
+    {
+      GaugeCsv rewrite(tmp, ser.gauge_names, ser.quantities);
+      std::vector<double> row;
+      for (std::size_t k = 0; k < ser.time.size(); ++k) {
+        row.clear();
+        for (std::size_t p = 0; p < ser.gauge_names.size(); ++p)
+          for (std::size_t q = 0; q < ser.quantities.size(); ++q) row.push_back(ser.values[q][p][k]);
+        rewrite.write_row(ser.time[k], row);
+      }
+      rewrite.close();
+    }
+    fs::rename(tmp, path);
+    o.csv.push_back(std::make_unique<GaugeCsv>(path));
+  }
+  o.restarting = false;
 }
 
 }  // namespace camouflet

@@ -5,6 +5,7 @@
 // calls it; it never reaches into solver types.
 #include <memory>
 
+#include "core/state_visitor.hpp"
 #include "output/snapshot.hpp"
 #include "solver/run.hpp"
 
@@ -40,6 +41,13 @@ class RunOutput {
     std::vector<std::vector<std::vector<double>>> values;
   };
   const std::vector<GaugeSeries>& gauges() const;
+
+  // Checkpoints (issue 9): the gauge rows so far and the
+  // output schedule. A RunOutput built with options.restart set writes nothing
+  // until it has been loaded this way; loading then rewrites each gauge CSV
+  // from the restored rows (dropping rows written after the checkpoint) and
+  // continues it.
+  void visit_state(StateVisitor& visitor);
 
  private:
   struct Impl;

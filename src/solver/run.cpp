@@ -7,9 +7,13 @@
 #include <cmath>
 #include <optional>
 
+#include <filesystem>
+
 #include "output/progress.hpp"
 #include "output/run_output.hpp"
 #include "solver/bar_output.hpp"
+#include "solver/interrupt.hpp"
+#include "solver/run_checkpoints.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -25,6 +29,12 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   Solver<D> solver(model);
   RunOutput output(model, options, solver.snapshot());
   BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories (issue 6)
+  // Checkpoints and restarts (issue 9): the solver's state, then the output's.
+  RunCheckpoints checkpoints(model, options, [&solver, &output](StateVisitor& v) {
+    solver.visit_state(v);
+    output.visit_state(v);
+  });
+  if (!options.restart.empty()) checkpoints.restart();
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
   RunSummary summary;
@@ -52,6 +62,15 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.step();
       output.after_cycle(solver.snapshot());
       bar_csv.after_cycle(solver.time(), solver.bars());
+      if (const int signal = stop_requested()) {
+        checkpoints.write(solver.cycle(), solver.time());
+        summarise(fmt::format("interrupted by signal {}", signal), true);
+        output.finish(solver.snapshot(), summary);
+        throw RunInterrupted(signal, fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
+                                                 signal, solver.cycle(), solver.time(),
+                                                 checkpoints.dir().string()));
+      }
+      if (checkpoints.due(solver.cycle())) checkpoints.write(solver.cycle(), solver.time());
       const EnergyBalance& energy = solver.energy();
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());
@@ -65,11 +84,21 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     }
   } catch (const NumericalError& error) {
     progress.done();
+    checkpoints.write_failure(solver.cycle(), solver.time());
     summarise(error.what(), true);
     output.finish(solver.snapshot(), summary);
     throw;
+  } catch (const std::filesystem::filesystem_error&) {
+    // Output failed (disk full, folder gone): one last checkpoint attempt, then exit code 3.
+    progress.done();
+    checkpoints.try_write(solver.cycle(), solver.time());
+    throw;
   }
   progress.done();
+  // The final state, so that a later run can go on with a later end time or
+  // more cycles; written before finish() adds its closing row and snapshot,
+  // which the continued run would not have.
+  if (model.checkpoint.enabled()) checkpoints.write(solver.cycle(), solver.time());
   summarise(reason, false);
   output.finish(solver.snapshot(), summary);
   return summary;

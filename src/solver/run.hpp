@@ -15,6 +15,12 @@ struct RunOptions {
   std::filesystem::path output_dir;  // created if missing; empty = write nothing (tests)
   ProgressStyle progress = ProgressStyle::automatic;
   int threads = 0;  // 0 = OpenMP default
+  // Checkpoints (issue 9, docs/reliability.md). `restart`: a checkpoint file,
+  // or "latest" for the newest usable one in <output_dir>/checkpoints.
+  std::string restart;
+  // "key = value" lines of every case setting a restart must not change
+  // (case/case_fingerprint.hpp); compared with the checkpoint's on restart.
+  std::string case_fingerprint;
 };
 
 // Energies in J, accumulated from the start of the run. In axisymmetric mode

@@ -173,12 +173,14 @@ void Solver<D>::limit_next_step(double dt_max) {
 template <int D>
 void Solver<D>::step() {
   try {
+    check_nodes_and_particles();  // the state at t_n: a NaN is named before forces spread it
     add_forces();            // loads and element forces at t_n (SPH particle forces join here)
     add_bar_forces();        // embedded reinforcement bars onto their host nodes
     advance_velocities();    // a = F / m, v(n+1/2) by the central difference
     constrain_velocities();  // fixed, prescribed, symmetry, axis at t_(n+1/2)
     account_energy();        // kinetic, internal, hourglass, boundary work at t_n
     advance_positions();     // x(n+1) = x(n) + v(n+1/2) dt
+    check_nodes_and_particles();  // finite and inside the domain box (solver_checks.cpp)
     element_kinematics();    // V, rho at t_(n+1); D, W, q at mid-step (SPH kinematics beside it)
     update_materials();      // EOS + strength + damage, one call per material batch
     update_bars();           // embedded bars: uniaxial-stress material update
@@ -186,22 +188,14 @@ void Solver<D>::step() {
     gather_element_state();  // sigma = s - p I, wave speeds, internal energy, dt vote
     choose_time_step();      // dt(n+3/2) = CFL min l / (c + |v|), growth limited
   } catch (NumericalError& error) {
-    if (error.cycle() < 0) error.set_context(cycle_, time_, "");
+    if (error.cycle() < 0) error.set_context(cycle_, time_, describe(error.kind(), error.id()));
     throw;
   }
 }
 
 template <int D>
 void Solver<D>::fail(NumericalError error) const {
-  const std::string where =
-      error.kind() == EntityKind::element && error.id() >= 1
-          ? fmt::format("material '{}'",
-                        model_
-                            .materials[static_cast<std::size_t>(
-                                elements_.material[static_cast<std::size_t>(error.id() - 1)])]
-                            .name)
-          : std::string();
-  error.set_context(cycle_, time_, where);
+  error.set_context(cycle_, time_, describe(error.kind(), error.id()));
   throw error;
 }
 

@@ -17,6 +17,7 @@
 #include "coupling/sliding_contact.hpp"
 #include "coupling/sph_fem_join.hpp"
 #include "coupling/transmitting_boundary.hpp"
+#include "core/state_visitor.hpp"
 #include "fem/fem_elements.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
@@ -47,6 +48,8 @@ class Solver {
   const TimeStepLimit& time_step_limit() const { return limit_; }
   const EnergyBalance& energy() const { return energy_; }
   FieldSnapshot snapshot() const;
+  // Every array and scalar of the run's state, for checkpoints (solver_state.cpp, issue 9).
+  void visit_state(StateVisitor& visitor);
 
   // --- state, for tests and output ---
   std::size_t node_count() const { return node_mass_.size(); }
@@ -81,6 +84,11 @@ class Solver {
   void erode_elements();
 
   [[noreturn]] void fail(NumericalError error) const;
+  // Diagnostics of issue 9 (solver_checks.cpp): a node or particle outside the
+  // domain box or with a non-finite position or velocity stops the run; an
+  // entity is described by material and position in every failure message.
+  void check_nodes_and_particles() const;
+  std::string describe(EntityKind kind, std::int64_t id) const;
   std::vector<sph::MirrorPlane> particle_planes() const;
 
   const Model& model_;

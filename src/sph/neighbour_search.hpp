@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "core/vec.hpp"
 
 namespace camouflet::sph {
@@ -39,6 +40,8 @@ class NeighbourSearch {
   std::int64_t builds() const { return builds_; }
   // Points in the order of the cells they sit in at the last build (cache-friendly order).
   const std::vector<std::uint32_t>& cell_order() const { return sorted_; }
+  // The lists and their build state, so a restart sums neighbours in the same order (sph_state.cpp).
+  void visit_state(StateVisitor& visitor);
 
  private:
   std::vector<std::size_t> offset_;

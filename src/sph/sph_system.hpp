@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "core/sym_tensor.hpp"
 #include "core/vec.hpp"
 #include "materials/material.hpp"
@@ -152,6 +153,8 @@ class SphSystem {
     return pair_gradient(i, j, grad);
   }
   const Kernel<D>& kernel() const { return kernel_; }
+  // Every array and scalar a restart needs (checkpoints, issue 9; sph_state.cpp).
+  void visit_state(StateVisitor& visitor);
 
  private:
   void prepare_neighbours();

@@ -1,0 +1,54 @@
+#pragma once
+// The checkpoint side of run_model() (issue 9, docs/reliability.md): when to
+// write, where, and finding and checking the checkpoint a restart starts from.
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "checkpoint/checkpoint_data.hpp"
+#include "model/model.hpp"
+#include "solver/run.hpp"
+
+namespace camouflet {
+
+class RunCheckpoints {
+ public:
+  // `visit_all` visits the whole run state (solver, then output).
+  RunCheckpoints(const Model& model, const RunOptions& options, std::function<void(StateVisitor&)> visit_all);
+
+  // True when the case's cycle or wall interval has elapsed since the last write.
+  bool due(std::int64_t cycle) const;
+  // Writes <output>/checkpoints/checkpoint_<cycle>.h5 (keeping the last N); nothing without an output folder.
+  void write(std::int64_t cycle, double time);
+  // Writes <output>/failure.h5 for inspection after a numerical failure; never throws (reports on stderr).
+  void write_failure(std::int64_t cycle, double time) noexcept;
+  // A last attempt after an I/O failure: never throws.
+  void try_write(std::int64_t cycle, double time) noexcept;
+
+  // Reads the checkpoint named by options.restart ("latest": the newest
+  // usable one, a refused one is reported and the previous one tried),
+  // checks it against the case fingerprint and loads it through visit_all.
+  // Throws InputError when there is none usable or the case changed a key
+  // that must not change (naming the key).
+  void restart();
+
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  CheckpointData collect(std::int64_t cycle, double time) const;
+
+  const Model& model_;
+  const RunOptions& options_;
+  std::function<void(StateVisitor&)> visit_all_;
+  std::filesystem::path dir_;
+  std::int64_t last_cycle_ = 0;
+  std::chrono::steady_clock::time_point last_wall_;
+};
+
+// The first key whose "key = value" line differs between two fingerprints
+// (case/case_fingerprint.hpp), with both values; empty when they agree.
+std::string first_changed_key(const std::string& before, const std::string& after);
+
+}  // namespace camouflet

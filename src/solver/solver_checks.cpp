@@ -1,0 +1,111 @@
+// Numerical-failure diagnostics of the cycle (issue 9): nodes and particles
+// must stay finite and inside the case's domain box ([run] domain_min /
+// domain_max), and every failure names the entity's material and position.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "solver/solver.hpp"
+
+namespace camouflet {
+
+namespace {
+
+template <int D>
+std::string position_text(const double* x) {
+  std::string s = "(";
+  for (int i = 0; i < D; ++i) s += fmt::format("{}{:.6g}", i ? ", " : "", x[i]);
+  return s + ") m";
+}
+
+}  // namespace
+
+template <int D>
+std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
+  if (id < 1) return {};
+  const auto k = static_cast<std::size_t>(id - 1);
+  if (kind == EntityKind::element && k < elements_.size()) {
+    constexpr int N = FemElements<D>::nodes;
+    double c[D] = {};
+    for (int a = 0; a < N; ++a)
+      for (int i = 0; i < D; ++i)
+        c[i] += position_[static_cast<std::size_t>(
+                    elements_.connectivity[k * N + static_cast<std::size_t>(a)] * D + i)] /
+                N;
+    return fmt::format("material '{}', centre {}",
+                       model_.materials[static_cast<std::size_t>(elements_.material[k])].name,
+                       position_text<D>(c));
+  }
+  if (kind == EntityKind::particle && particles_ && k < particles_->size()) {
+    const auto& p = particles_->particles();
+    return fmt::format("material '{}', position {}",
+                       model_.materials[static_cast<std::size_t>(p.material[k])].name,
+                       position_text<D>(p.position[k].c.data()));
+  }
+  if (kind == EntityKind::node && k < node_mass_.size())
+    return fmt::format("position {}", position_text<D>(&position_[k * D]));
+  return {};
+}
+
+template <int D>
+void Solver<D>::check_nodes_and_particles() const {
+  const RunControl& run = model_.run;
+  const auto outside = [&run](const double* x) {
+    for (int i = 0; i < D; ++i)
+      if (!(x[i] >= run.domain_min[static_cast<std::size_t>(i)] &&
+            x[i] <= run.domain_max[static_cast<std::size_t>(i)]))
+        return i;
+    return -1;
+  };
+  const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
+  std::int64_t bad = std::numeric_limits<std::int64_t>::max();
+#pragma omp parallel for schedule(static) reduction(min : bad) if (nn > 20000)
+  for (std::int64_t n = 0; n < nn; ++n) {
+    const double* x = &position_[static_cast<std::size_t>(n * D)];
+    const double* v = &velocity_[static_cast<std::size_t>(n * D)];
+    bool ok = outside(x) < 0;
+    for (int i = 0; i < D; ++i) ok = ok && std::isfinite(v[i]);
+    if (!ok) bad = std::min(bad, n);
+  }
+  if (bad != std::numeric_limits<std::int64_t>::max()) {
+    const auto n = static_cast<std::size_t>(bad);
+    const double* x = &position_[n * D];
+    const double* v = &velocity_[n * D];
+    bool finite = true;
+    for (int i = 0; i < D; ++i) finite = finite && std::isfinite(x[i]) && std::isfinite(v[i]);
+    if (!finite)
+      fail(NumericalError(EntityKind::node, bad + 1, "velocity",
+                          fmt::format("non-finite position or velocity (v = {})", position_text<D>(v))));
+    const int axis = outside(x);
+    fail(
+        NumericalError(EntityKind::node, bad + 1, "position",
+                       fmt::format("left the domain box: coordinate {} = {:.6g} m outside [{:.6g}, {:.6g}] m",
+                                   axis + 1, x[axis], run.domain_min[static_cast<std::size_t>(axis)],
+                                   run.domain_max[static_cast<std::size_t>(axis)])));
+  }
+  if (!particles_) return;
+  const auto& p = particles_->particles();
+  for (std::size_t i = 0; i < p.real; ++i) {
+    const double* x = p.position[i].c.data();
+    bool finite = true;
+    for (int d = 0; d < D; ++d) finite = finite && std::isfinite(x[d]) && std::isfinite(p.velocity[i][d]);
+    if (!finite)
+      fail(NumericalError(EntityKind::particle, static_cast<std::int64_t>(i + 1), "velocity",
+                          "non-finite position or velocity"));
+    const int axis = outside(x);
+    if (axis >= 0)
+      fail(NumericalError(
+          EntityKind::particle, static_cast<std::int64_t>(i + 1), "position",
+          fmt::format("left the domain box: coordinate {} = {:.6g} m outside [{:.6g}, {:.6g}] m", axis + 1,
+                      x[axis], run.domain_min[static_cast<std::size_t>(axis)],
+                      run.domain_max[static_cast<std::size_t>(axis)])));
+  }
+}
+
+template std::string Solver<2>::describe(EntityKind, std::int64_t) const;
+template std::string Solver<3>::describe(EntityKind, std::int64_t) const;
+template void Solver<2>::check_nodes_and_particles() const;
+template void Solver<3>::check_nodes_and_particles() const;
+
+}  // namespace camouflet

@@ -1,0 +1,70 @@
+// Solver<D>::visit_state: the complete state of the explicit cycle by name
+// (core/state_visitor.hpp) for checkpoints and restarts (issue 9). Anything
+// a later cycle reads must be listed here; restart-determinism tests
+// (tests/solver/test_restart.cpp) compare a restarted run bit for bit with an
+// uninterrupted one and fail when something is missing.
+#include "materials/material_points_state.hpp"
+#include "solver/solver.hpp"
+
+namespace camouflet {
+
+template <int D>
+void Solver<D>::visit_state(StateVisitor& v) {
+  StateScope scope(v, "solver");
+  visit(v, "time", time_);
+  visit(v, "cycle", cycle_);
+  visit(v, "dt", dt_);
+  visit(v, "dt_next", dt_next_);
+  visit(v, "limit.dt", limit_.dt);
+  visit(v, "limit.reason", limit_.reason);
+  visit(v, "energy.kinetic", energy_.kinetic);
+  visit(v, "energy.internal", energy_.internal);
+  visit(v, "energy.hourglass", energy_.hourglass);
+  visit(v, "energy.viscous", energy_.viscous);
+  visit(v, "energy.boundary_work", energy_.boundary_work);
+  visit(v, "energy.initial_total", energy_.initial_total);
+  visit(v, "energy.relative_error", energy_.relative_error);
+  visit(v, "internal_energy", internal_energy_);
+  visit(v, "hourglass_stored", hourglass_stored_);
+  visit(v, "hourglass_dissipated", hourglass_dissipated_);
+
+  {
+    StateScope nodes(v, "nodes");
+    visit(v, "position", position_);
+    visit(v, "velocity", velocity_);
+    visit(v, "velocity_old", velocity_old_);
+    visit(v, "acceleration", acceleration_);
+    visit(v, "force", force_);
+    visit(v, "displacement", displacement_);
+    visit(v, "hourglass_force", hourglass_force_);
+    visit(v, "hourglass_force_previous", hourglass_force_previous_);
+    visit(v, "mass", node_mass_);
+  }
+  {
+    StateScope elements(v, "elements");
+    FemElements<D>& e = elements_;
+    visit(v, "connectivity", e.connectivity);
+    visit(v, "material", e.material);
+    visit(v, "point", e.point);
+    visit(v, "mass", e.mass);
+    visit(v, "volume", e.volume);
+    visit(v, "stress", e.stress);
+    visit(v, "viscosity", e.viscosity);
+    visit(v, "density", e.density);
+    visit(v, "wave_speed", e.wave_speed);
+    visit(v, "length", e.length);
+    visit(v, "speed", e.speed);
+    visit(v, "hourglass_displacement", e.hourglass_displacement);
+  }
+  for (std::size_t m = 0; m < batches_.size(); ++m) {
+    StateScope batch(v, "batch" + std::to_string(m));
+    camouflet::visit_state(v, batches_[m]);
+  }
+  boundaries_.visit_state(v);
+  if (particles_) particles_->visit_state(v);
+}
+
+template void Solver<2>::visit_state(StateVisitor&);
+template void Solver<3>::visit_state(StateVisitor&);
+
+}  // namespace camouflet

@@ -1,0 +1,170 @@
+// Restart determinism (issue 9, "What it must show" 1): a run stopped half way
+// (max_cycles) and restarted from its checkpoint ends with gauge CSVs and a
+// final state identical bit for bit to the uninterrupted run, same thread
+// count, for a FEM case and a particle (SPH) model. Comparing every array of
+// the final checkpoints also catches state that visit_state() forgot.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../sph/sph_test_models.hpp"
+#include "case/case_fingerprint.hpp"
+#include "case/case_reader.hpp"
+#include "common/verification.hpp"
+#include "restart_helpers.hpp"
+#include "solver/run.hpp"
+#include "solver/run_checkpoints.hpp"
+
+namespace camouflet {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "restart" / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+RunOptions options_for(const fs::path& out, const fs::path& case_file) {
+  RunOptions o;
+  o.output_dir = out;
+  o.progress = ProgressStyle::none;
+  o.threads = 1;
+  o.case_fingerprint = case_fingerprint(case_file);
+  return o;
+}
+
+TEST(Restart, FemRunStoppedHalfWayAndRestartedIsBitIdentical) {
+  const fs::path root = scratch("fem");
+  const fs::path case_file = root / "case.toml";
+  test::write_text(case_file, test::restart_fem_case());
+  const Model full = read_case(case_file);
+  const RunSummary reference = run_model(full, options_for(root / "full", case_file));
+  ASSERT_GT(reference.cycles, 100);
+
+  // First half: the same case stopped at half the cycles.
+  const std::int64_t half = reference.cycles / 2;
+  test::write_text(case_file, test::restart_fem_case("max_cycles = " + std::to_string(half) + "\n"));
+  const Model first = read_case(case_file);
+  RunOptions o1 = options_for(root / "split", case_file);
+  const RunSummary s1 = run_model(first, o1);
+  EXPECT_EQ(s1.cycles, half);
+
+  // Second half: the original case, from the latest checkpoint.
+  test::write_text(case_file, test::restart_fem_case());
+  const Model second = read_case(case_file);
+  RunOptions o2 = options_for(root / "split", case_file);
+  o2.restart = "latest";
+  const RunSummary s2 = run_model(second, o2);
+  EXPECT_EQ(s2.cycles, reference.cycles);
+  EXPECT_EQ(s2.time, reference.time);
+
+  EXPECT_EQ(test::read_text(root / "full" / "axis.csv"), test::read_text(root / "split" / "axis.csv"));
+  EXPECT_EQ(test::read_text(root / "full" / "fields.pvd"), test::read_text(root / "split" / "fields.pvd"));
+  test::expect_same_final_state(root / "full", root / "split");
+}
+
+TEST(Restart, ChangedPhysicsKeyIsRefusedNamingTheKey) {
+  const fs::path root = scratch("changed");
+  const fs::path case_file = root / "case.toml";
+  test::write_text(case_file, test::restart_fem_case("max_cycles = 20\n"));
+  run_model(read_case(case_file), options_for(root / "out", case_file));
+  // The CFL factor changes the physics: refused. The end time may change.
+  test::write_text(case_file, test::restart_fem_case("max_cycles = 40\n"));
+  std::string text = test::read_text(case_file);
+  text.replace(text.find("cfl = 0.6"), 9, "cfl = 0.5");
+  test::write_text(case_file, text);
+  RunOptions o = options_for(root / "out", case_file);
+  o.restart = "latest";
+  try {
+    run_model(read_case(case_file), o);
+    FAIL() << "a changed cfl was accepted on restart";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("key 'run.cfl' changed from 0.6 to 0.5"), std::string::npos) << e.message();
+  }
+}
+
+TEST(Restart, DamagedLatestCheckpointIsRefusedAndThePreviousOneUsed) {
+  const fs::path root = scratch("damaged");
+  const fs::path case_file = root / "case.toml";
+  test::write_text(case_file,
+                   test::restart_fem_case("max_cycles = 60\n", "interval_cycles = 20\nkeep = 3\n"));
+  run_model(read_case(case_file), options_for(root / "out", case_file));
+  auto list = list_checkpoints(root / "out" / "checkpoints");
+  ASSERT_EQ(list.size(), 3u);
+  // Flip one byte inside the data of the newest: its checksum no longer matches.
+  {
+    std::string bytes = test::read_text(list.front());
+    bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x5a);
+    test::write_text(list.front(), bytes);
+  }
+  EXPECT_THROW(read_checkpoint(list.front()), CheckpointError);
+  // A truncated file is refused too.
+  {
+    const std::string bytes = test::read_text(list[1]);
+    test::write_text(root / "truncated.h5", bytes.substr(0, bytes.size() / 3));
+  }
+  try {
+    read_checkpoint(root / "truncated.h5");
+    FAIL() << "a truncated checkpoint was accepted";
+  } catch (const CheckpointError& e) {
+    EXPECT_NE(std::string(e.what()).find("refused"), std::string::npos) << e.what();
+  }
+  test::write_text(case_file,
+                   test::restart_fem_case("max_cycles = 80\n", "interval_cycles = 20\nkeep = 3\n"));
+  RunOptions o = options_for(root / "out", case_file);
+  o.restart = "latest";
+  const RunSummary s = run_model(read_case(case_file), o);
+  EXPECT_EQ(s.cycles, 80);
+}
+
+// Two elastic blocks of particles colliding at 40 m/s (plane strain), a gauge in the struck block.
+Model particle_model(std::int64_t max_cycles) {
+  Model model;
+  model.run.mode = GeometryMode::plane_strain;
+  model.run.end_time = 1.5e-4;
+  model.run.cfl = 0.5;
+  model.run.max_cycles = max_cycles;
+  model.output.field_interval = 5e-5;
+  model.checkpoint.interval_cycles = 1000000;
+  const auto solid = test::elastic_solid("steel", 7800.0, 1.6e11, 8.0e10);
+  test::add_sph_part(model, "striker", solid, test::box_fill({0.0, 0.0, 0.0}, {0.04, 0.04, 0.0}, 0.004),
+                     {40.0, 0.0, 0.0});
+  test::add_sph_part(model, "target", solid, test::box_fill({0.0401, 0.0, 0.0}, {0.1, 0.04, 0.0}, 0.004));
+  GaugeGroup group;
+  group.name = "target";
+  group.points.push_back({"middle", {0.06, 0.02, 0.0}, {}});
+  model.gauges.push_back(group);
+  return model;
+}
+
+TEST(Restart, ParticleRunStoppedHalfWayAndRestartedIsBitIdentical) {
+  const fs::path root = scratch("sph");
+  RunOptions o;
+  o.progress = ProgressStyle::none;
+  o.threads = 1;
+  o.output_dir = root / "full";
+  const Model full = particle_model(std::numeric_limits<std::int64_t>::max());
+  const RunSummary reference = run_model(full, o);
+  ASSERT_GT(reference.cycles, 20);
+  const std::int64_t half = reference.cycles / 2;
+  o.output_dir = root / "split";
+  const Model first = particle_model(half);
+  EXPECT_EQ(run_model(first, o).cycles, half);
+  o.restart = "latest";
+  const RunSummary s2 = run_model(full, o);
+  EXPECT_EQ(s2.cycles, reference.cycles);
+  EXPECT_EQ(test::read_text(root / "full" / "target.csv"), test::read_text(root / "split" / "target.csv"));
+  test::expect_same_final_state(root / "full", root / "split");
+}
+
+TEST(Restart, FirstChangedKeyIsNamed) {
+  EXPECT_EQ(first_changed_key("a = 1\nb = 2\n", "a = 1\nb = 2\n"), "");
+  EXPECT_EQ(first_changed_key("a = 1\nb = 2\n", "a = 1\nb = 3\n"), "key 'b' changed from 2 to 3");
+  EXPECT_EQ(first_changed_key("a = 1\n", "a = 1\nc = 4\n"), "key 'c' = 4 was added");
+  EXPECT_EQ(first_changed_key("a = 1\nc = 4\n", "a = 1\n"), "key 'c' (was 4) is missing");
+}
+
+}  // namespace
+}  // namespace camouflet

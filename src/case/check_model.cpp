@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "case/sections.hpp"
+#include "model/detonation_check.hpp"
 #include "model/isoparametric.hpp"
 
 namespace camouflet::case_detail {
@@ -153,6 +154,7 @@ void check_model(const Model& model) {
   check_elements(model);
   check_axisymmetric(model);
   check_gauges(model);
+  check_detonation_points(model);  // a charge lit outside every explosive would never burn
 }
 
 }  // namespace camouflet::case_detail

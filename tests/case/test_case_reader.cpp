@@ -40,7 +40,7 @@ block = { origin = [0.0, -2.0], size = [2.0, 2.0], cells = [4, 4], grading = [2.
 
 [[parts]]
 name = "slab"
-material = "rock"
+material = "charge"
 gmsh = "meshes/two_quads.msh"
 physical = "plate"
 
@@ -71,8 +71,11 @@ to = [0.5, -1.9]
 count = 4
 
 [[detonation]]
-position = [0.0, -1.0]
+position = [0.5, 0.5]
 time = 1e-5
+
+[materials.charge]
+preset = "tnt_wang2005"
 )";
 
 TEST(CaseReader, EverySectionLands) {
@@ -93,7 +96,7 @@ TEST(CaseReader, EverySectionLands) {
   EXPECT_EQ(m.output.gauge_interval, 1e-6);
   EXPECT_EQ(m.output.log_interval_s, 2.0);
 
-  ASSERT_EQ(m.materials.size(), 1u);
+  ASSERT_EQ(m.materials.size(), 2u);
   EXPECT_EQ(m.materials[0].material->reference_density(), 2650.0);
   EXPECT_EQ(m.materials[0].material->strength()->type(), "von_mises");
 

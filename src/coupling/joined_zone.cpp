@@ -15,8 +15,11 @@ std::array<double, 3> centre_of(const FemMesh& mesh, std::size_t e) {
   std::array<double, 3> c{};
   const int npe = mesh.nodes_per_element, d = mesh.dimension;
   for (int a = 0; a < npe; ++a) {
-    const auto n = static_cast<std::size_t>(mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(a)]);
-    for (int i = 0; i < d; ++i) c[static_cast<std::size_t>(i)] += mesh.coordinates[n * static_cast<std::size_t>(d) + static_cast<std::size_t>(i)] / npe;
+    const auto n = static_cast<std::size_t>(
+        mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(a)]);
+    for (int i = 0; i < d; ++i)
+      c[static_cast<std::size_t>(i)] +=
+          mesh.coordinates[n * static_cast<std::size_t>(d) + static_cast<std::size_t>(i)] / npe;
   }
   return c;
 }
@@ -29,8 +32,10 @@ double size_of(const FemMesh& mesh, std::size_t e) {
     for (int b = a + 1; b < npe; ++b) {
       double s = 0.0;
       for (int i = 0; i < d; ++i) {
-        const auto na = static_cast<std::size_t>(mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(a)]);
-        const auto nb = static_cast<std::size_t>(mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(b)]);
+        const auto na = static_cast<std::size_t>(
+            mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(a)]);
+        const auto nb = static_cast<std::size_t>(
+            mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(b)]);
         const double dx = mesh.coordinates[na * static_cast<std::size_t>(d) + static_cast<std::size_t>(i)] -
                           mesh.coordinates[nb * static_cast<std::size_t>(d) + static_cast<std::size_t>(i)];
         s += dx * dx;
@@ -62,9 +67,10 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
     for (std::size_t a = 0; a < npe; ++a) hole_nodes.insert(mesh.connectivity[e * npe + a]);
   }
   if (cut == 0)
-    throw InputError(spec.where, fmt::format("region: the SPH region of part '{}' cuts no element of a FEM part, so "
-                                             "there is nothing to join it to (the parts are not adjacent)",
-                                             part_name));
+    throw InputError(spec.where,
+                     fmt::format("region: the SPH region of part '{}' cuts no element of a FEM part, so "
+                                 "there is nothing to join it to (the parts are not adjacent)",
+                                 part_name));
 
   // Elements beside the hole (sharing a node with it) and their parts.
   Join join;
@@ -82,9 +88,10 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
       }
   }
   if (beside.empty())
-    throw InputError(spec.where, fmt::format("region: the SPH region of part '{}' covers the whole FEM mesh: no FEM "
-                                             "part is left to join",
-                                             part_name));
+    throw InputError(spec.where,
+                     fmt::format("region: the SPH region of part '{}' covers the whole FEM mesh: no FEM "
+                                 "part is left to join",
+                                 part_name));
   join.fem_parts.assign(fem_parts.begin(), fem_parts.end());
 
   // Fill the hole. A box region is snapped to the hole's bounding box, so the
@@ -104,7 +111,8 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
   const std::size_t first_particle = model.particles.count();
   fill_particles(model.particles, snapped, model.run.mode);
 
-  // Spacing ratio at the interface: each element beside the hole against the particles within two of its sizes.
+  // Spacing ratio at the interface: each element beside the hole against the particles within two of its
+  // sizes.
   double size_max = 0.0;
   for (std::size_t e : beside) size_max = std::max(size_max, size_of(mesh, e));
   const double cell = 2.0 * size_max;
@@ -130,7 +138,8 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
           for (std::size_t i : it->second) {
             double r2 = 0.0;
             for (int k = 0; k < d; ++k) {
-              const double dx = px[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)] - c[static_cast<std::size_t>(k)];
+              const double dx = px[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)] -
+                                c[static_cast<std::size_t>(k)];
               r2 += dx * dx;
             }
             const double s_p = model.particles.spacing[i];
@@ -141,10 +150,11 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
         }
   }
   if (worst > join_spacing_ratio_limit * (1.0 + 1e-6))
-    throw InputError(spec.where,
-                     fmt::format("spacing: particle spacing {:.4g} m against elements of {:.4g} m at the join of part "
-                                 "'{}' is a ratio of {:.3g}, beyond the limit {:g} (docs/theory/coupling.md)",
-                                 worst_particle, worst_element, part_name, worst, join_spacing_ratio_limit));
+    throw InputError(
+        spec.where,
+        fmt::format("spacing: particle spacing {:.4g} m against elements of {:.4g} m at the join of part "
+                    "'{}' is a ratio of {:.3g}, beyond the limit {:g} (docs/theory/coupling.md)",
+                    worst_particle, worst_element, part_name, worst, join_spacing_ratio_limit));
 
   // Remove the hole's elements, and the faces of sets that no remaining element carries.
   std::vector<std::int64_t> connectivity;
@@ -174,7 +184,9 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
         }
         if (all) carried = true;
       }
-      if (carried) kept.insert(kept.end(), faces.begin() + static_cast<std::ptrdiff_t>(k), faces.begin() + static_cast<std::ptrdiff_t>(k + fn));
+      if (carried)
+        kept.insert(kept.end(), faces.begin() + static_cast<std::ptrdiff_t>(k),
+                    faces.begin() + static_cast<std::ptrdiff_t>(k + fn));
     }
     faces = std::move(kept);
   }

@@ -37,7 +37,8 @@ SlidingContact<D>::SlidingContact(const Model& model) {
       throw InputError(c.where, "part: a sliding interface needs an SPH part on its particle side");
     const auto set = model.mesh.face_sets.find(c.face_set);
     if (set == model.mesh.face_sets.end())
-      throw InputError(c.where, fmt::format("set: unknown face set '{}' for a sliding interface", c.face_set));
+      throw InputError(c.where,
+                       fmt::format("set: unknown face set '{}' for a sliding interface", c.face_set));
     if (!(c.friction >= 0.0)) throw InputError(c.where, "friction: must be >= 0");
     if (!(c.penalty_scale > 0.0 && c.penalty_scale < 4.0))
       throw InputError(c.where, "penalty_scale: must lie in (0, 4) for a stable contact spring");
@@ -88,7 +89,8 @@ double SlidingContact<D>::apply(sph::SphSystem<D>& particles, const double* x, c
         } else {
           const Vec<3> c0 = node(q[0]), c1 = node(q[1]), c2 = node(q[2]), c3 = node(q[3]);
           const Vec<3> d1 = c2 - c0, d2 = c3 - c1;
-          Vec<3> n{{d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]}};
+          Vec<3> n{
+              {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]}};
           const double len = std::sqrt(dot(n, n));
           if (!(len > 0.0)) continue;
           n = n * (1.0 / len);
@@ -97,7 +99,8 @@ double SlidingContact<D>::apply(sph::SphSystem<D>& particles, const double* x, c
             std::array<double, 3> w{};
             double g = 0.0;
             const Vec<3> corner[4] = {c0, c1, c2, c3};
-            if (!project_triangle(p.position[i], corner[tri[0]], corner[tri[1]], corner[tri[2]], n, w, g)) continue;
+            if (!project_triangle(p.position[i], corner[tri[0]], corner[tri[1]], corner[tri[2]], n, w, g))
+              continue;
             if (g >= radius || g < -radius || radius - g <= best_depth) continue;
             best_depth = radius - g, best_gap = g, count = 3, normal = n;
             nodes = {q[tri[0]], q[tri[1]], q[tri[2]]};
@@ -111,7 +114,8 @@ double SlidingContact<D>::apply(sph::SphSystem<D>& particles, const double* x, c
       const double fn = s.penalty_scale * m / (dt * dt) * best_depth;
       Vec<D> v_face{};
       for (int a = 0; a < count; ++a)
-        for (int d = 0; d < D; ++d) v_face[d] += weight[static_cast<std::size_t>(a)] * v[nodes[static_cast<std::size_t>(a)] * D + d];
+        for (int d = 0; d < D; ++d)
+          v_face[d] += weight[static_cast<std::size_t>(a)] * v[nodes[static_cast<std::size_t>(a)] * D + d];
       const Vec<D> v_rel = p.velocity[i] - v_face;
       const Vec<D> v_t = v_rel - normal * dot(v_rel, normal);
       const double vt = std::sqrt(dot(v_t, v_t));
@@ -119,7 +123,8 @@ double SlidingContact<D>::apply(sph::SphSystem<D>& particles, const double* x, c
       if (s.friction > 0.0 && vt > 0.0) force -= v_t * (std::min(s.friction * fn, m * vt / dt) / vt);
       p.acceleration[i] += force * (1.0 / m);
       for (int a = 0; a < count; ++a)
-        for (int d = 0; d < D; ++d) f[nodes[static_cast<std::size_t>(a)] * D + d] -= weight[static_cast<std::size_t>(a)] * force[d];
+        for (int d = 0; d < D; ++d)
+          f[nodes[static_cast<std::size_t>(a)] * D + d] -= weight[static_cast<std::size_t>(a)] * force[d];
       power += dot(force, v_rel);
     }
   }

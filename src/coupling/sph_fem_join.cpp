@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <map>
+#include <numbers>
 #include <unordered_map>
 
 #include "sph/artificial_stress.hpp"
@@ -33,7 +33,8 @@ template <int D>
 std::int64_t cell_key(const Vec<D>& x, double cell, const std::array<int, 3>& offset = {0, 0, 0}) {
   std::int64_t key = 0;
   for (int i = 0; i < D; ++i)
-    key = key * 2000003 + static_cast<std::int64_t>(std::floor(x[i] / cell)) + offset[static_cast<std::size_t>(i)];
+    key = key * 2000003 + static_cast<std::int64_t>(std::floor(x[i] / cell)) +
+          offset[static_cast<std::size_t>(i)];
   return key;
 }
 
@@ -52,13 +53,14 @@ Vec<D> SphFemJoin<D>::element_centre(std::size_t e) const {
 
 template <int D>
 Vec<D> SphFemJoin<D>::image(Vec<D> x, const Point& point) const {
-  for (int k = 0; k < point.image_count; ++k) x = sph::mirror_position(x, planes_[point.planes[static_cast<std::size_t>(k)]]);
+  for (int k = 0; k < point.image_count; ++k)
+    x = sph::mirror_position(x, planes_[point.planes[static_cast<std::size_t>(k)]]);
   return x;
 }
 
 template <int D>
-SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, const double* x, const double* v,
-                          sph::SphSystem<D>& particles, std::vector<sph::MirrorPlane> planes)
+SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, const double* x,
+                          const double* v, sph::SphSystem<D>& particles, std::vector<sph::MirrorPlane> planes)
     : elements_(&elements),
       x_(x),
       v_(v),
@@ -95,7 +97,8 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     const std::size_t n_now = candidates.size();
     for (std::size_t c = 0; c < n_now; ++c) {
-      if (std::abs(where[c][planes_[k].axis] - planes_[k].position) >= reach || candidates[c].image_count >= 3)
+      if (std::abs(where[c][planes_[k].axis] - planes_[k].position) >= reach ||
+          candidates[c].image_count >= 3)
         continue;
       Point p = candidates[c];
       p.planes[p.image_count++] = static_cast<std::uint8_t>(k);
@@ -105,7 +108,8 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
   }
   // Keep the candidates within reach of a particle (particles binned on a grid of edge `reach`).
   std::unordered_map<std::int64_t, std::vector<std::uint32_t>> bins;
-  for (std::size_t i = 0; i < pa.real; ++i) bins[cell_key<D>(pa.position[i], reach)].push_back(static_cast<std::uint32_t>(i));
+  for (std::size_t i = 0; i < pa.real; ++i)
+    bins[cell_key<D>(pa.position[i], reach)].push_back(static_cast<std::uint32_t>(i));
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     bool near = false;
     for (int a = -1; a <= 1 && !near; ++a)
@@ -127,30 +131,32 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
   find_interface_faces(model, elements, particles, bins, reach);
   if (points_.empty() || faces_.empty()) {
     const Join& join = model.joins.front();
-    throw InputError(join.where, fmt::format("join: no element of the joined FEM parts lies within {:.4g} m of the "
-                                             "particles of part '{}': the parts are not adjacent",
-                                             reach, model.parts[static_cast<std::size_t>(join.sph_part)].name));
+    throw InputError(join.where,
+                     fmt::format("join: no element of the joined FEM parts lies within {:.4g} m of the "
+                                 "particles of part '{}': the parts are not adjacent",
+                                 reach, model.parts[static_cast<std::size_t>(join.sph_part)].name));
   }
   particles.set_external_points(points_.size(),
                                 [this](sph::ParticleArrays<D>& p, std::size_t begin) { fill(p, begin); });
 }
 
 template <int D>
-void SphFemJoin<D>::find_interface_faces(const Model& model, const FemElements<D>& elements,
-                                         const sph::SphSystem<D>& particles,
-                                         const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,
-                                         double reach) {
+void SphFemJoin<D>::find_interface_faces(
+    const Model& model, const FemElements<D>& elements, const sph::SphSystem<D>& particles,
+    const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins, double reach) {
   constexpr int N = FemElements<D>::nodes;
   constexpr int FN = face_nodes;
   // Local faces of quad4 (edges, counter-clockwise) and hex8.
   static const int quad_faces[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const int hex_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  static const int hex_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                      {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   std::map<std::array<std::int64_t, FN>, int> count;
   auto local = [&](std::size_t e, int f) {
     std::array<std::int64_t, FN> q{};
     for (int a = 0; a < FN; ++a)
       q[static_cast<std::size_t>(a)] =
-          elements.connectivity[e * N + static_cast<std::size_t>(D == 2 ? quad_faces[f][a] : hex_faces[f][a])];
+          elements
+              .connectivity[e * N + static_cast<std::size_t>(D == 2 ? quad_faces[f][a] : hex_faces[f][a])];
     return q;
   };
   constexpr int faces_per_element = D == 2 ? 4 : 6;
@@ -247,9 +253,10 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
     p.planar_density[j] = eta;
     p.smoothing_length[j] = h;
     p.stress_term[j] = sigma * (1.0 / rho);
-    p.tensile_term[j] = options_.artificial_stress
-                            ? sph::artificial_stress<D>(sigma, options_.artificial_stress_epsilon, w / (eta * eta))
-                            : SymTensor{};
+    p.tensile_term[j] =
+        options_.artificial_stress
+            ? sph::artificial_stress<D>(sigma, options_.artificial_stress_epsilon, w / (eta * eta))
+            : SymTensor{};
     p.wave_speed[j] = el.wave_speed[e];
     p.correction[j] = SymTensor::identity();
   }
@@ -281,8 +288,10 @@ double SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* 
         const double c_mean = 0.5 * (p.wave_speed[i] + p.wave_speed[j]);
         pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta_i + eta_j));
       }
-      const SymTensor own = options_.volume_form ? p.stress_term[i] * (1.0 / eta_j) : p.stress_term[i] * (1.0 / eta_i);
-      SymTensor other = options_.volume_form ? p.stress_term[j] * (1.0 / eta_i) : p.stress_term[j] * (1.0 / eta_j);
+      const SymTensor own =
+          options_.volume_form ? p.stress_term[i] * (1.0 / eta_j) : p.stress_term[i] * (1.0 / eta_i);
+      SymTensor other =
+          options_.volume_form ? p.stress_term[j] * (1.0 / eta_i) : p.stress_term[j] * (1.0 / eta_j);
       if (options_.artificial_stress) {
         const double dp = hij / options_.smoothing_factor;
         const double fr = kernel.value(r, hij) / kernel.value(dp, hij);

@@ -7,8 +7,8 @@
 // the kernel reach of a particle becomes a "coupling point" at its centre,
 // carrying the element's mass, density, stress, wave speed and the mean
 // velocity of its nodes, with h = smoothing_factor x (element size) scaled by
-// (rho0 / rho)^(1/d). This is the linking of Johnson (1994, Comput. Struct.
-// 51, 553: "Linking of Lagrangian particle methods to standard finite element
+// (rho0 / rho)^(1/d). This is the linking of Johnson (1994, Nucl. Eng. Des.
+// 150: "Linking of Lagrangian particle methods to standard finite element
 // methods for high velocity impact computations"), where the elements at the
 // interface are seen as particles by the particle side, and of the Autodyn
 // SPH-Lagrange "join": the particle next to the interface has a full kernel
@@ -66,15 +66,17 @@ class SphFemJoin {
     std::size_t element = 0;
     std::array<std::uint8_t, 3> planes{};  // images: planes applied in order
     std::uint8_t image_count = 0;
-    double h0 = 0.0;    // m, smoothing length at the reference density
-    double rho0 = 0.0;  // kg/m^3
+    double h0 = 0.0;       // m, smoothing length at the reference density
+    double rho0 = 0.0;     // kg/m^3
     std::size_t face = 0;  // index into faces_: where its reactions go
   };
   static constexpr int face_nodes = D == 2 ? 2 : 4;
   std::vector<std::array<std::int64_t, face_nodes>> faces_;  // interface faces
   void fill(sph::ParticleArrays<D>& p, std::size_t begin) const;
-  void find_interface_faces(const Model& model, const FemElements<D>& elements, const sph::SphSystem<D>& particles,
-                            const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins, double reach);
+  void find_interface_faces(const Model& model, const FemElements<D>& elements,
+                            const sph::SphSystem<D>& particles,
+                            const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,
+                            double reach);
   Vec<D> element_centre(std::size_t e) const;
   Vec<D> image(Vec<D> x, const Point& point) const;
 

@@ -11,8 +11,9 @@ namespace camouflet {
 namespace {
 
 // Index of the element holding all nodes of a face, or -1.
-std::int64_t element_of_face(const std::vector<std::vector<std::size_t>>& node_elements, const std::int64_t* face,
-                             int face_nodes, const std::vector<std::int64_t>& connectivity, int nodes_per_element) {
+std::int64_t element_of_face(const std::vector<std::vector<std::size_t>>& node_elements,
+                             const std::int64_t* face, int face_nodes,
+                             const std::vector<std::int64_t>& connectivity, int nodes_per_element) {
   for (std::size_t e : node_elements[static_cast<std::size_t>(face[0])]) {
     const auto* conn = &connectivity[e * static_cast<std::size_t>(nodes_per_element)];
     bool all = true;
@@ -38,10 +39,11 @@ TransmittingBoundary<D>::TransmittingBoundary(const Model& model, const FemEleme
       bool particles = false;  // a name of an SPH part: no faces to put dashpots on
       for (const Part& p : model.parts)
         if (p.kind == PartKind::sph && bc.set.rfind(p.name, 0) == 0) particles = true;
-      throw InputError(bc.where, particles ? fmt::format("set '{}': transmitting boundaries are not supported on "
-                                                         "SPH particle parts (only on FEM face sets)",
-                                                         bc.set)
-                                           : fmt::format("unknown face set '{}' for a transmitting boundary", bc.set));
+      throw InputError(bc.where,
+                       particles ? fmt::format("set '{}': transmitting boundaries are not supported on "
+                                               "SPH particle parts (only on FEM face sets)",
+                                               bc.set)
+                                 : fmt::format("unknown face set '{}' for a transmitting boundary", bc.set));
     }
     if (node_elements.empty()) {
       node_elements.resize(model.mesh.node_count());
@@ -53,12 +55,12 @@ TransmittingBoundary<D>::TransmittingBoundary(const Model& model, const FemEleme
     const auto& list = set->second;
     for (std::size_t k = 0; k + F - 1 < list.size(); k += F) {
       Face face{};
-      std::copy(list.begin() + static_cast<std::ptrdiff_t>(k), list.begin() + static_cast<std::ptrdiff_t>(k + F),
-                face.nodes.begin());
+      std::copy(list.begin() + static_cast<std::ptrdiff_t>(k),
+                list.begin() + static_cast<std::ptrdiff_t>(k + F), face.nodes.begin());
       const std::int64_t e = element_of_face(node_elements, face.nodes.data(), F, elements.connectivity, N);
       if (e < 0)
-        throw InputError(bc.where, fmt::format("face {} of set '{}' is not the face of an element", k / F + 1,
-                                               bc.set));
+        throw InputError(bc.where,
+                         fmt::format("face {} of set '{}' is not the face of an element", k / F + 1, bc.set));
       face.element = static_cast<std::size_t>(e);
       faces_.push_back(face);
     }
@@ -67,8 +69,8 @@ TransmittingBoundary<D>::TransmittingBoundary(const Model& model, const FemEleme
 
 template <int D>
 double TransmittingBoundary<D>::damp(const double* x, const double* v_old, double* v, const double* node_mass,
-                                     const FemElements<D>& elements, const std::vector<MaterialPoints>& batches,
-                                     double dt) {
+                                     const FemElements<D>& elements,
+                                     const std::vector<MaterialPoints>& batches, double dt) {
   constexpr int F = D == 2 ? 2 : 4;
   if (nodes_.empty()) {
     for (const Face& face : faces_) nodes_.insert(nodes_.end(), face.nodes.begin(), face.nodes.end());
@@ -113,7 +115,8 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
     for (int a = 0; a < F; ++a) {
       const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), q[static_cast<std::size_t>(a)]);
       auto& c = damping_[static_cast<std::size_t>(it - nodes_.begin())];
-      const double weight = w[static_cast<std::size_t>(a)] * area * rho;  // kg/m^3 m^2 (plane strain: per metre)
+      const double weight =
+          w[static_cast<std::size_t>(a)] * area * rho;  // kg/m^3 m^2 (plane strain: per metre)
       for (int i = 0; i < D; ++i)
         for (int j = 0; j < D; ++j) {
           const double nn = n[static_cast<std::size_t>(i)] * n[static_cast<std::size_t>(j)];
@@ -149,7 +152,8 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
         double b[3][3];
         for (int i = 0; i < 3; ++i)
           for (int j = 0; j < 3; ++j) b[i][j] = j == col ? rhs[i] : a[i][j];
-        sol[col] = (b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
+        sol[col] = (b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) -
+                    b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
                     b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0])) /
                    det;
       }

@@ -47,8 +47,8 @@ class TransmittingBoundary {
     std::size_t element;
   };
   std::vector<Face> faces_;
-  std::vector<std::int64_t> nodes_;                  // boundary nodes, sorted
-  std::vector<std::array<double, D * D>> damping_;   // N s/m, per entry of nodes_
+  std::vector<std::int64_t> nodes_;                 // boundary nodes, sorted
+  std::vector<std::array<double, D * D>> damping_;  // N s/m, per entry of nodes_
   bool axisymmetric_ = false;
 };
 

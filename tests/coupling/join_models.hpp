@@ -66,7 +66,9 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
 
   const double c_p = c.p_wave_speed(), duration = 0.1 / c_p;
   const std::string axes = "xyz";
-  auto face = [&](int axis, bool max) { return "bar." + std::string(1, axes[static_cast<std::size_t>(axis)]) + (max ? "max" : "min"); };
+  auto face = [&](int axis, bool max) {
+    return "bar." + std::string(1, axes[static_cast<std::size_t>(axis)]) + (max ? "max" : "min");
+  };
   BoundaryCondition drive = velocity(face(along, false), along, 1.0);
   drive.history = sin2_pulse(duration);
   model.boundaries.push_back(drive);
@@ -126,17 +128,21 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
     const double v_in = std::abs(solver.velocity()[g_in * D + static_cast<std::size_t>(along)]);
     const double v_out = std::abs(solver.velocity()[g_out * D + static_cast<std::size_t>(along)]);
     const double v_sph = std::abs(pa.velocity[g_sph][along]);
-    if (t < 0.35) r.incident = std::max(r.incident, v_in);
-    else if (t < 1.0) r.reflected_fem_to_sph = std::max(r.reflected_fem_to_sph, v_in);
-    else if (t > 1.2) r.reflected_sph_to_fem = std::max(r.reflected_sph_to_fem, v_in);
+    if (t < 0.35)
+      r.incident = std::max(r.incident, v_in);
+    else if (t < 1.0)
+      r.reflected_fem_to_sph = std::max(r.reflected_fem_to_sph, v_in);
+    else if (t > 1.2)
+      r.reflected_sph_to_fem = std::max(r.reflected_sph_to_fem, v_in);
     r.in_particles = std::max(r.in_particles, v_sph);
     r.transmitted = std::max(r.transmitted, v_out);
     const EnergyBalance& e = solver.energy();
     const double total = e.kinetic + e.internal + e.hourglass;
     if (e_start == 0.0 && solver.time() >= t_start) e_start = total, w_start = e.boundary_work;
     if (std::getenv("JOIN_DEBUG") && solver.cycle() % 50 == 0)
-      std::printf("t %.3f kin %.5g int %.5g hg %.5g visc %.5g sph_kin %.5g sph_int %.5g\n", t, e.kinetic, e.internal,
-                  e.hourglass, e.viscous, solver.particles()->kinetic_energy(), solver.particles()->internal_energy());
+      std::printf("t %.3f kin %.5g int %.5g hg %.5g visc %.5g sph_kin %.5g sph_int %.5g\n", t, e.kinetic,
+                  e.internal, e.hourglass, e.viscous, solver.particles()->kinetic_energy(),
+                  solver.particles()->internal_energy());
     if (r.energy_change == 0.0 && solver.time() >= t_stop) {
       r.energy_change = (total - e_start) / e_start;
       r.join_work = (e.boundary_work - w_start) / e_start;

@@ -3,9 +3,8 @@
 // material interface: reflections below 5 % of the incident amplitude,
 // transmission within 5 %, total energy within 1 % over the crossing; graded
 // particles (spacing ratio 2 against the elements) reflect below 10 %.
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include "common/verification.hpp"
 #include "join_models.hpp"
@@ -15,10 +14,11 @@ using namespace camouflet;
 namespace {
 
 void check_crossing(const std::string& label, const test::JoinCrossing& r, double reflection_limit) {
-  fmt::print("{}: incident {:.4f}, reflected FEM->SPH {:.4f}, SPH->FEM {:.4f}, in particles {:.4f}, "
-             "transmitted {:.4f}, energy change {:.4g}, join work {:.4g}\n",
-             label, r.incident, r.reflected_fem_to_sph, r.reflected_sph_to_fem, r.in_particles, r.transmitted,
-             r.energy_change, r.join_work);
+  fmt::print(
+      "{}: incident {:.4f}, reflected FEM->SPH {:.4f}, SPH->FEM {:.4f}, in particles {:.4f}, "
+      "transmitted {:.4f}, energy change {:.4g}, join work {:.4g}\n",
+      label, r.incident, r.reflected_fem_to_sph, r.reflected_sph_to_fem, r.in_particles, r.transmitted,
+      r.energy_change, r.join_work);
   test::verify({label + ": reflection at the FEM->SPH join / incident", "0 (one material)", 0.0,
                 r.reflected_fem_to_sph / r.incident, reflection_limit, false, "-"});
   test::verify({label + ": reflection at the SPH->FEM join / incident", "0 (one material)", 0.0,
@@ -41,7 +41,8 @@ TEST(SphFemJoin, PlanePulseAxisymmetric) {
 }
 
 TEST(SphFemJoin, PlanePulse3D) {
-  check_crossing("Joined SPH zone, P-pulse, 3-D", test::join_crossing<3>(GeometryMode::three_d, 5e-3, 5e-3), 0.05);
+  check_crossing("Joined SPH zone, P-pulse, 3-D", test::join_crossing<3>(GeometryMode::three_d, 5e-3, 5e-3),
+                 0.05);
 }
 
 TEST(SphFemJoin, GradedParticlesSpacingRatio2) {
@@ -59,7 +60,8 @@ TEST(SphFemJoin, SpacingRatioBeyondLimitIsRefused) {
 }
 
 TEST(SphFemJoin, RegionOutsideTheMeshIsRefused) {
-  Model model = test::block_model(GeometryMode::plane_strain, {{"bar", 0, {0, 0, 0}, {1, 1, 0}, {10, 10, 1}}}, {});
+  Model model =
+      test::block_model(GeometryMode::plane_strain, {{"bar", 0, {0, 0, 0}, {1, 1, 0}, {10, 10, 1}}}, {});
   Part zone;
   zone.name = "zone";
   zone.kind = PartKind::sph;
@@ -78,4 +80,3 @@ TEST(SphFemJoin, RegionOutsideTheMeshIsRefused) {
     EXPECT_NE(std::string(e.what()).find("not adjacent"), std::string::npos) << e.what();
   }
 }
-

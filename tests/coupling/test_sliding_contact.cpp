@@ -3,9 +3,8 @@
 // Total momentum of particles and nodes is conserved within 0.5 % and no
 // particle centre crosses the plate surface (the documented tolerance: an
 // interpenetration below half a particle spacing).
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include "common/fem_models.hpp"
 #include "common/verification.hpp"
@@ -31,7 +30,8 @@ ImpactResult disc_on_plate(double friction, double tangential_speed) {
   const GeometryMode mode = D == 2 ? GeometryMode::plane_strain : GeometryMode::three_d;
   const double cell = 4e-3, s = 2e-3, v0 = 50.0;
   // Plate: 0.12 x 0.02 (x 0.12) m, its top face at y = 0.
-  Model model = test::block_model(mode, {{"plate", 0, {-0.06, -0.02, -0.02}, {0.12, 0.02, 0.04}, {30, 5, 10}}}, c);
+  Model model =
+      test::block_model(mode, {{"plate", 0, {-0.06, -0.02, -0.02}, {0.12, 0.02, 0.04}, {30, 5, 10}}}, c);
   Part disc;
   disc.name = "disc";
   disc.kind = PartKind::sph;
@@ -65,7 +65,8 @@ ImpactResult disc_on_plate(double friction, double tangential_speed) {
   auto momentum = [&] {
     Vec<D> pm = solver.particles()->momentum();
     for (std::size_t n = 0; n < solver.node_count(); ++n)
-      for (int i = 0; i < D; ++i) pm[i] += solver.node_mass()[n] * solver.velocity()[n * D + static_cast<std::size_t>(i)];
+      for (int i = 0; i < D; ++i)
+        pm[i] += solver.node_mass()[n] * solver.velocity()[n * D + static_cast<std::size_t>(i)];
     return pm;
   };
   const Vec<D> p0 = momentum();
@@ -103,9 +104,11 @@ ImpactResult disc_on_plate(double friction, double tangential_speed) {
   for (std::size_t n = 0; n < solver.node_count(); ++n)
     mn += solver.node_mass()[n], vn += solver.node_mass()[n] * solver.velocity()[n * D + 1];
   r.plate_velocity = vn / mn;
-  fmt::print("impact {}-D: momentum error {:.3g}, smallest centre gap {:.4g} m (spacing {:.3g}), particle v_y {:.4g}, "
-             "plate v_y {:.4g}\n",
-             D, r.momentum_error, r.smallest_gap, s, r.rebound, r.plate_velocity);
+  fmt::print(
+      "impact {}-D: momentum error {:.3g}, smallest centre gap {:.4g} m (spacing {:.3g}), particle v_y "
+      "{:.4g}, "
+      "plate v_y {:.4g}\n",
+      D, r.momentum_error, r.smallest_gap, s, r.rebound, r.plate_velocity);
   return r;
 }
 
@@ -113,9 +116,10 @@ ImpactResult disc_on_plate(double friction, double tangential_speed) {
 
 TEST(SlidingContact, DiscHitsPlatePlaneStrain) {
   const ImpactResult r = disc_on_plate<2>(0.3, 10.0);
-  test::verify({"SPH disc on a FEM plate (sliding interface, mu = 0.3): momentum change / initial", "0 (conserved)",
-                0.0, r.momentum_error, 0.005, false, "-"});
-  test::record_check("SPH disc on a FEM plate: interpenetration", "no particle centre below the plate surface",
+  test::verify({"SPH disc on a FEM plate (sliding interface, mu = 0.3): momentum change / initial",
+                "0 (conserved)", 0.0, r.momentum_error, 0.005, false, "-"});
+  test::record_check("SPH disc on a FEM plate: interpenetration",
+                     "no particle centre below the plate surface",
                      fmt::format("smallest centre height above the plate {:.3g} m (half spacing {:.3g} m)",
                                  r.smallest_gap, 0.5 * r.spacing),
                      r.smallest_gap > 0.0);
@@ -126,8 +130,8 @@ TEST(SlidingContact, DiscHitsPlatePlaneStrain) {
 
 TEST(SlidingContact, CylinderHitsPlate3D) {
   const ImpactResult r = disc_on_plate<3>(0.3, 10.0);
-  test::verify({"SPH cylinder on a FEM plate, 3-D (sliding interface): momentum change / initial", "0 (conserved)",
-                0.0, r.momentum_error, 0.005, false, "-"});
+  test::verify({"SPH cylinder on a FEM plate, 3-D (sliding interface): momentum change / initial",
+                "0 (conserved)", 0.0, r.momentum_error, 0.005, false, "-"});
   EXPECT_GT(r.smallest_gap, 0.0);
   EXPECT_LT(r.plate_velocity, -0.1);
 }

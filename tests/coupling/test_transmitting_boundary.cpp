@@ -66,7 +66,8 @@ std::pair<double, double> column_reflection(bool absorbing) {
     solver.limit_next_step(model.run.end_time - solver.time());
     solver.step();
     const double v = std::abs(solver.velocity()[gauge * 2]);
-    (solver.time() < split ? incident : reflected) = std::max(v, solver.time() < split ? incident : reflected);
+    (solver.time() < split ? incident : reflected) =
+        std::max(v, solver.time() < split ? incident : reflected);
   }
   return {incident, reflected};
 }
@@ -80,7 +81,8 @@ struct EnergyLeft {
   double balance_error = 0.0;
 };
 
-EnergyLeft energy_left(GeometryMode mode, bool absorbing, double cell = 1.25e-2, double width = 0.04, double end = 0.0, double angle = 45.0) {
+EnergyLeft energy_left(GeometryMode mode, bool absorbing, double cell = 1.25e-2, double width = 0.04,
+                       double end = 0.0, double angle = 45.0) {
   test::use_threads(1);
   const ElasticConstants c;
   const double size = 1.0;
@@ -115,7 +117,8 @@ EnergyLeft energy_left(GeometryMode mode, bool absorbing, double cell = 1.25e-2,
       dir = r > 0.0 ? std::array<double, 2>{x / r, y / r} : std::array<double, 2>{0.0, 0.0};
     }
     const double amplitude = std::exp(-(xi * xi) / (width * width));
-    for (int i = 0; i < 2; ++i) v[n * 2 + static_cast<std::size_t>(i)] = amplitude * dir[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 2; ++i)
+      v[n * 2 + static_cast<std::size_t>(i)] = amplitude * dir[static_cast<std::size_t>(i)];
     e0 += 0.5 * solver.node_mass()[n] * amplitude * amplitude;
   }
   while (solver.time() < model.run.end_time) {
@@ -139,8 +142,10 @@ std::pair<double, double> oblique_reflection() {
   test::use_threads(1);
   const ElasticConstants c;
   const double cell = 1e-2, width = 0.08;
-  Model model = test::block_model(GeometryMode::plane_strain, {{"box", 0, {0, 0, 0}, {3.0, 1.5, 0}, {300, 150, 1}}}, c);
-  for (const char* f : {"box.xmin", "box.xmax", "box.ymin", "box.ymax"}) model.boundaries.push_back(transmitting(f));
+  Model model =
+      test::block_model(GeometryMode::plane_strain, {{"box", 0, {0, 0, 0}, {3.0, 1.5, 0}, {300, 150, 1}}}, c);
+  for (const char* f : {"box.xmin", "box.xmax", "box.ymin", "box.ymax"})
+    model.boundaries.push_back(transmitting(f));
   const double c_p = c.p_wave_speed();
   model.run.end_time = 1.55 / c_p;
   Solver<2> solver(model);
@@ -152,7 +157,8 @@ std::pair<double, double> oblique_reflection() {
     const double g = std::exp(-(xi * xi) / (width * width));
     solver.velocity()[n * 2] = g * d[0];
     solver.velocity()[n * 2 + 1] = g * d[1];
-    if (std::hypot(x - 1.6, y - 0.4) < std::hypot(solver.position()[gauge * 2] - 1.6, solver.position()[gauge * 2 + 1] - 0.4))
+    if (std::hypot(x - 1.6, y - 0.4) <
+        std::hypot(solver.position()[gauge * 2] - 1.6, solver.position()[gauge * 2 + 1] - 0.4))
       gauge = n;
   }
   double incident = 0.0, reflected = 0.0;
@@ -197,4 +203,22 @@ TEST(TransmittingBoundary, SphericalWaveAxisymmetricQuarter) {
   const EnergyLeft closed = energy_left(GeometryMode::axisymmetric, false, 1e-2, 0.12, 2.0);
   test::verify({"Closed quarter domain (control): energy left / initial", "1 (nothing leaves)", 1.0,
                 closed.fraction, 0.05, true, "-"});
+}
+
+TEST(TransmittingBoundary, OnAnSphPartIsRefused) {
+  Model model =
+      test::block_model(GeometryMode::plane_strain, {{"soil", 0, {0, 0, 0}, {1, 1, 0}, {4, 4, 1}}}, {});
+  Part zone;
+  zone.name = "charge";
+  zone.kind = PartKind::sph;
+  zone.material = 0;
+  model.parts.push_back(zone);
+  model.boundaries.push_back(transmitting("charge.xmax"));
+  try {
+    Solver<2> solver(model);
+    FAIL() << "a transmitting boundary on an SPH part was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not supported on SPH particle parts"), std::string::npos)
+        << e.what();
+  }
 }

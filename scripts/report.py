@@ -150,6 +150,7 @@ def main():
                     P.append(np.nanmax(s))
             peaks[name] = (np.array(Z), np.array(P))
             ax.loglog(Z, P, style, label=f"group {name[-1]} (computed)")
+        ax.set_ylim(bottom=f1.min() / 30.0)  # gauges the wave has not reached fall off the bottom
         ax.set_xlabel("scaled distance Z = R / W$^{1/3}$  [m/kg$^{1/3}$]")
         ax.set_ylabel("peak radial stress [MPa]")
         ax.set_title(f"Attenuation of peak stress, {W:g} kg TNT at {d:g} m (cf. Fig. 8b), f = {F_COUPLING}")

@@ -17,6 +17,7 @@
 #include "case/case_reader.hpp"
 #include "common/verification.hpp"
 #include "mesh/buried_structure.hpp"
+#include "run_executable.hpp"
 #include "solver/run.hpp"
 
 namespace camouflet {
@@ -99,6 +100,18 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
     test::verify({std::string("Reduced buried-structure case: peak ") + ref.what,
                   "stored reference (this code)", ref.value, computed, 0.03, true, ref.unit});
   }
+
+  // `camouflet report` on the same output: the page and its figures (needs
+  // Debian's python3-matplotlib, which scripts/setup.sh installs).
+  if (test::run_camouflet_raw("/usr/bin/python3 -c 'import matplotlib'").status != 0)
+    GTEST_SKIP() << "python3-matplotlib is not installed: report not checked";
+  const auto report = test::run_camouflet("report '" + out.string() + "'");
+  ASSERT_EQ(report.status, 0) << report.output;
+  EXPECT_TRUE(fs::exists(out / "report.html"));
+  for (const char* f :
+       {"fig08b_peak_stress.png", "fig09_histories.png", "fig11_interface_stress.png",
+        "fig12_displacements.png", "fig15_front_wall.png", "fig16_floor.png", "energy_balance.png"})
+    EXPECT_TRUE(fs::exists(out / "report" / f)) << f;
 }
 
 }  // namespace

@@ -36,7 +36,8 @@ void add_generate_command(CLI::App& app, CommandResult& result) {
     result.exit_code = run_guarded([&] {
       const BuriedStructureSpec spec = read_buried_structure_params(*params);
       const BuriedStructureLayout layout = layout_buried_structure(spec);
-      const std::filesystem::path target = output->empty() ? default_case_path(*params) : std::filesystem::path(*output);
+      const std::filesystem::path target =
+          output->empty() ? default_case_path(*params) : std::filesystem::path(*output);
       const std::string text =
           buried_structure_case(spec, fmt::format("camouflet generate {} -o {}", *params, target.string()));
       std::ofstream out(target, std::ios::binary);

@@ -55,8 +55,9 @@ void add_report_command(CLI::App& app, CommandResult& result) {
       result.exit_code = exit_io_failure;
       return;
     }
-    const std::string command = fmt::format("/usr/bin/python3 {} {} --camouflet {}", shell_quoted(script.string()),
-                                            shell_quoted(*outdir), shell_quoted(self.string()));
+    const std::string command =
+        fmt::format("/usr/bin/python3 {} {} --camouflet {}", shell_quoted(script.string()),
+                    shell_quoted(*outdir), shell_quoted(self.string()));
     const int status = std::system(command.c_str());
     result.exit_code = status == -1        ? static_cast<int>(exit_io_failure)
                        : WIFEXITED(status) ? WEXITSTATUS(status)

@@ -14,5 +14,7 @@ void add_run_command(CLI::App& app, CommandResult& result);
 void add_check_command(CLI::App& app, CommandResult& result);
 void add_empirical_command(CLI::App& app, CommandResult& result);
 void add_material_test_command(CLI::App& app, CommandResult& result);
+void add_generate_command(CLI::App& app, CommandResult& result);
+void add_report_command(CLI::App& app, CommandResult& result);
 
 }  // namespace camouflet::app

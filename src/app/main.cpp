@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   camouflet::app::add_check_command(app, result);
   camouflet::app::add_empirical_command(app, result);
   camouflet::app::add_material_test_command(app, result);
+  camouflet::app::add_generate_command(app, result);
+  camouflet::app::add_report_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,320 @@
+#!/usr/bin/python3
+"""Figures and one HTML page from the output folder of a buried-structure run
+(`camouflet report OUTDIR`, docs/buried-structure.md).
+
+Reads summary.json, the gauge CSVs (group_A, group_B, structure) and the
+generator's header line of case.toml; writes PNG figures and report.html into
+OUTDIR/report/. Uses only the Python standard library, NumPy and matplotlib
+(Debian's python3-matplotlib). Figure numbers refer to Wang, Lu, Hao, Chong,
+Computers and Structures 83 (2005) 339-356.
+"""
+import argparse
+import csv
+import html
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+G = 9.80665  # m/s^2 per g
+F_COUPLING = 0.6  # the paper's coupling factor (section 5.3)
+
+
+def read_csv(path):
+    """Gauge CSV -> (time array, {column: array})."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, data = rows[0], np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
+    if data.size == 0:
+        data = np.zeros((0, len(header)))
+    cols = {name: data[:, k] for k, name in enumerate(header)}
+    return cols["time_s"], cols
+
+
+def generator_parameters(case_path):
+    """The `# generator:` line that `camouflet generate` writes into the case header."""
+    params = {}
+    try:
+        with open(case_path) as f:
+            for line in f:
+                m = re.match(r"#\s*generator:\s*(.*)", line)
+                if m:
+                    for item in m.group(1).split():
+                        key, _, value = item.partition("=")
+                        params[key] = float(value)
+    except OSError:
+        pass
+    return params
+
+
+def gauge_names(cols, prefix):
+    names = []
+    for c in cols:
+        g = c.split(".")[0]
+        if g.startswith(prefix) and g not in names and "." in c:
+            names.append(g)
+    return names
+
+
+def radial_stress(cols, g, centre_z):
+    """Normal stress along the ray from the charge centre, compression positive (MPa)."""
+    r0 = cols[g + ".position_x"][0]
+    z0 = cols[g + ".position_y"][0]
+    R = math.hypot(r0, z0 - centre_z)
+    nr, nz = r0 / R, (z0 - centre_z) / R
+    s = cols[g + ".stress_xx"] * nr * nr + cols[g + ".stress_yy"] * nz * nz + 2 * cols[g + ".stress_xy"] * nr * nz
+    return -s / 1e6, R
+
+
+def speed(cols, g):
+    return np.hypot(cols[g + ".velocity_x"], cols[g + ".velocity_y"])
+
+
+def tm5_functions(Z):
+    """TM 5-855-1 as used by the paper, eqs. (38)-(39): MPa."""
+    return F_COUPLING * 15.0 * Z ** -2.5, F_COUPLING * 22.0 * Z ** -2.0
+
+
+def empirical_averages(camouflet, W, r1, r2):
+    """In-structure averages from `camouflet empirical --csv` (rows by attenuation n)."""
+    if not camouflet:
+        return []
+    try:
+        text = subprocess.run(
+            [camouflet, "empirical", "--charge-mass", str(W), "--coupling", str(F_COUPLING), "--span", str(r1), str(r2),
+             "--csv"], check=True, capture_output=True, text=True).stdout
+    except (OSError, subprocess.CalledProcessError) as e:
+        print(f"report: camouflet empirical failed: {e}", file=sys.stderr)
+        return []
+    return [r for r in csv.DictReader(text.splitlines()) if r["section"] == "in_structure"]
+
+
+def save(fig, outdir, name):
+    fig.tight_layout()
+    path = os.path.join(outdir, name)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return name
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("outdir")
+    ap.add_argument("--camouflet", default="", help="camouflet executable (for `empirical --csv`)")
+    args = ap.parse_args()
+    out = args.outdir
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    gen = generator_parameters(os.path.join(out, "case.toml"))
+    W = gen.get("charge_mass_kg", 100.0)
+    d = gen.get("burst_depth_m", 0.5)
+    standoff = gen.get("standoff_m", 6.0)
+    length = gen.get("box_length_m", 4.0)
+    height = gen.get("box_height_m", 1.0)
+    w3 = W ** (1.0 / 3.0)
+    figdir = os.path.join(out, "report")
+    os.makedirs(figdir, exist_ok=True)
+    figures = []  # (file, caption)
+    tables = []  # html snippets
+    plt.rcParams.update({"figure.figsize": (7.5, 4.6), "axes.grid": True, "grid.alpha": 0.3, "font.size": 10})
+
+    groups = {}
+    for name in ("group_A", "group_B"):
+        path = os.path.join(out, name + ".csv")
+        if os.path.exists(path):
+            groups[name] = read_csv(path)
+
+    # Fig. 8b: peak stress against scaled distance with TM-5 Functions 1 and 2.
+    peaks = {}
+    if groups:
+        fig, ax = plt.subplots()
+        Zs = np.geomspace(0.2, 3.0, 100)
+        f1, f2 = tm5_functions(Zs)
+        ax.fill_between(Zs, f1 / 1.5, f2 * 1.5, color="0.85", label="TM-5 band widened by 1.5")
+        ax.loglog(Zs, f1, "k--", label="Function 1: f·15·Z$^{-2.5}$")
+        ax.loglog(Zs, f2, "k-.", label="Function 2: f·22·Z$^{-2}$")
+        for (name, (t, cols)), style in zip(groups.items(), ("o-", "s-")):
+            Z, P = [], []
+            for g in gauge_names(cols, name[-1]):
+                s, R = radial_stress(cols, g, -d)
+                if len(s):
+                    Z.append(R / w3)
+                    P.append(np.nanmax(s))
+            peaks[name] = (np.array(Z), np.array(P))
+            ax.loglog(Z, P, style, label=f"group {name[-1]} (computed)")
+        ax.set_ylim(bottom=f1.min() / 30.0)  # gauges the wave has not reached fall off the bottom
+        ax.set_xlabel("scaled distance Z = R / W$^{1/3}$  [m/kg$^{1/3}$]")
+        ax.set_ylabel("peak radial stress [MPa]")
+        ax.set_title(f"Attenuation of peak stress, {W:g} kg TNT at {d:g} m (cf. Fig. 8b), f = {F_COUPLING}")
+        ax.legend(fontsize=8)
+        figures.append((save(fig, figdir, "fig08b_peak_stress.png"),
+                        "Peak radial stress against scaled distance: group A (parallel to the ground at the charge "
+                        "depth) and group B (45° line down), with the TM 5-855-1 Functions 1 and 2 (f = 0.6)."))
+        rows = []
+        for name, (Z, P) in peaks.items():
+            lo, hi = tm5_functions(Z)
+            for z, p, a, b in zip(Z, P, lo, hi):
+                inside = a / 1.5 <= p <= b * 1.5
+                rows.append(f"<tr><td>{name[-1]}</td><td>{z:.3f}</td><td>{z * w3:.2f}</td><td>{p:.3g}</td>"
+                            f"<td>{a:.3g} – {b:.3g}</td><td>{'yes' if inside else 'no'}</td></tr>")
+        tables.append("<h2>Peak stresses against TM-5</h2><table><tr><th>group</th><th>Z [m/kg<sup>1/3</sup>]</th>"
+                      "<th>R [m]</th><th>peak [MPa]</th><th>Function 1 – 2 [MPa]</th><th>within ×1.5</th></tr>" +
+                      "".join(rows) + "</table>")
+
+    # Fig. 9: stress and velocity histories at equal distance (the A/B pair nearest 4 m).
+    if "group_A" in groups and "group_B" in groups:
+        tA, cA = groups["group_A"]
+        tB, cB = groups["group_B"]
+        best = None
+        for g in gauge_names(cA, "A"):
+            other = "B" + g[1:]
+            if other + ".stress_xx" not in cB:
+                continue
+            _, R = radial_stress(cA, g, -d)
+            if best is None or abs(R - 4.0) < abs(best[2] - 4.0):
+                best = (g, other, R)
+        if best:
+            fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+            sA, _ = radial_stress(cA, best[0], -d)
+            sB, _ = radial_stress(cB, best[1], -d)
+            axes[0].plot(tA * 1e3, sA, label=f"group A ({best[0]})")
+            axes[0].plot(tB * 1e3, sB, label=f"group B ({best[1]})")
+            axes[0].set_ylabel("radial stress [MPa, compression +]")
+            axes[1].plot(tA * 1e3, speed(cA, best[0]), label=f"group A ({best[0]})")
+            axes[1].plot(tB * 1e3, speed(cB, best[1]), label=f"group B ({best[1]})")
+            axes[1].set_ylabel("particle speed [m/s]")
+            for ax in axes:
+                ax.set_xlabel("time [ms]")
+                ax.legend()
+            fig.suptitle(f"Histories at {best[2]:.2f} m from the charge (cf. Fig. 9)")
+            figures.append((save(fig, figdir, "fig09_histories.png"),
+                            f"Stress and velocity histories at the same range ({best[2]:.2f} m) in group A and group B."))
+
+    spath = os.path.join(out, "structure.csv")
+    if os.path.exists(spath):
+        t, c = read_csv(spath)
+        ms = t * 1e3
+        has = lambda g: g + ".velocity_x" in c  # noqa: E731
+        # Fig. 11: interface stress at target 9 (normal stress on the wall face).
+        if has("t9"):
+            fig, ax = plt.subplots()
+            ax.plot(ms, -c["t9.stress_xx"] / 1e6, label="radial (normal to the wall)")
+            ax.plot(ms, c["t9.pressure"] / 1e6, alpha=0.6, label="pressure")
+            ax.set_xlabel("time [ms]")
+            ax.set_ylabel("stress [MPa, compression +]")
+            ax.set_title("Interface stress at target 9, front wall mid-height (cf. Fig. 11)")
+            ax.legend()
+            figures.append((save(fig, figdir, "fig11_interface_stress.png"),
+                            "Soil stress at the soil–structure interface at the front wall's mid-height (target 9)."))
+        # Fig. 12: displacements of the front wall and deflections.
+        if all(has(g) for g in ("t1", "t2", "t3", "t5", "t6")):
+            fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+            for g in ("t1", "t2", "t3"):
+                axes[0].plot(ms, c[g + ".displacement_x"] * 1e3, label=f"{g} horizontal")
+                axes[0].plot(ms, c[g + ".displacement_y"] * 1e3, "--", label=f"{g} vertical")
+            axes[0].set_ylabel("displacement [mm]")
+            axes[0].set_title("front wall (targets 1–3)")
+            wall = c["t2.displacement_x"] - 0.5 * (c["t1.displacement_x"] + c["t3.displacement_x"])
+            floor = c["t5.displacement_y"] - 0.5 * (c["t3.displacement_y"] + c["t6.displacement_y"])
+            axes[1].plot(ms, wall * 1e3, label="front wall (horizontal, t2 vs t1/t3)")
+            axes[1].plot(ms, floor * 1e3, label="floor (vertical, t5 vs t3/t6)")
+            axes[1].set_ylabel("deflection [mm]")
+            axes[1].set_title("deflections")
+            for ax in axes:
+                ax.set_xlabel("time [ms]")
+                ax.legend(fontsize=8)
+            fig.suptitle("Displacements and deflections (cf. Fig. 12)")
+            figures.append((save(fig, figdir, "fig12_displacements.png"),
+                            f"Front-wall displacements and deflections. Peak front-wall deflection "
+                            f"{np.nanmax(np.abs(wall)) * 1e3:.2f} mm ({np.nanmax(np.abs(wall)) / height * 100:.3f} % of "
+                            f"the height); floor {np.nanmax(np.abs(floor)) * 1e3:.2f} mm "
+                            f"({np.nanmax(np.abs(floor)) / length * 100:.3f} % of the length)."))
+        # Figs. 15-16: velocity and acceleration of the front wall and the floor.
+        sets = (("front wall", ("t1", "t2", "t3"), "x", "horizontal", "fig15_front_wall.png", "Fig. 15"),
+                ("floor", ("t3", "t4", "t5"), "y", "vertical", "fig16_floor.png", "Fig. 16"))
+        measured = {}
+        for title, gs, axis, word, fname, ref in sets:
+            if not all(has(g) for g in gs):
+                continue
+            fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+            vmax = amax = 0.0
+            for g in gs:
+                v = c[f"{g}.velocity_{axis}"]
+                a = c[f"{g}.acceleration_{axis}"] / G
+                axes[0].plot(ms, v, label=g)
+                axes[1].plot(ms, a, label=g, lw=0.8)
+                vmax = max(vmax, float(np.nanmax(np.abs(v))) if len(v) else 0.0)
+                amax = max(amax, float(np.nanmax(np.abs(a))) if len(a) else 0.0)
+            measured[title] = (vmax, amax, word)
+            axes[0].set_ylabel(f"{word} velocity [m/s]")
+            axes[1].set_ylabel(f"{word} acceleration [g]")
+            for ax in axes:
+                ax.set_xlabel("time [ms]")
+                ax.legend()
+            fig.suptitle(f"{title.capitalize()}: {word} velocity and acceleration (cf. {ref})")
+            figures.append((save(fig, figdir, fname), f"{title.capitalize()} {word} velocity and acceleration."))
+        avg = empirical_averages(args.camouflet, W, standoff, standoff + length)
+        if measured:
+            rows = []
+            v_lo = min((float(r["velocity_m_per_s"]) for r in avg), default=float("nan"))
+            v_hi = max((float(r["velocity_m_per_s"]) for r in avg), default=float("nan"))
+            a_lo = min((float(r["acceleration_g"]) for r in avg), default=float("nan"))
+            a_hi = max((float(r["acceleration_g"]) for r in avg), default=float("nan"))
+            for title, (vmax, amax, word) in measured.items():
+                ok = 0.5 * v_lo <= vmax <= 2.0 * v_hi
+                rows.append(f"<tr><td>{title} ({word})</td><td>{vmax:.3g}</td><td>{v_lo:.3g} – {v_hi:.3g}</td>"
+                            f"<td>{'yes' if ok else 'no'}</td><td>{amax:.4g}</td><td>{a_lo:.4g} – {a_hi:.4g}</td></tr>")
+            tables.append(
+                "<h2>In-structure shock against TM-5 averages</h2>"
+                f"<p>TM-5 averages over R = {standoff:g} … {standoff + length:g} m from "
+                "<code>camouflet empirical --csv</code> (n = 2.5 and 2, f = 0.6). The criterion of issue 8 is "
+                "0.5 × the lower to 2 × the upper average. Accelerations are raw gauge values (not filtered).</p>"
+                "<table><tr><th>where</th><th>peak velocity [m/s]</th><th>TM-5 V<sub>avg</sub> [m/s]</th>"
+                "<th>within criterion</th><th>peak acceleration [g]</th><th>TM-5 a<sub>avg</sub> [g]</th></tr>" +
+                "".join(rows) + "</table>")
+
+    # Energy balance (summary.json holds the final state only).
+    e = summary.get("energy_J", {})
+    if e:
+        fig, ax = plt.subplots(figsize=(7.5, 3.6))
+        keys = ["kinetic", "internal", "hourglass", "viscous", "boundary_work", "initial_total"]
+        vals = [e.get(k) or 0.0 for k in keys]
+        ax.barh(keys, [v / 1e6 for v in vals], color=["C0", "C1", "C2", "C3", "C4", "0.5"])
+        ax.set_xlabel("energy at the end of the run [MJ, full revolution]")
+        ax.set_title(f"Energy balance at t = {summary.get('final_time_s', 0) * 1e3:.2f} ms: relative error "
+                     f"{(e.get('relative_error') or 0) * 100:.2f} %")
+        figures.append((save(fig, figdir, "energy_balance.png"),
+                        "Energy balance at the end of the run (summary.json; the output has no energy history yet)."))
+
+    status = (f"{html.escape(str(summary.get('stop_reason')))} at t = {summary.get('final_time_s', 0) * 1e3:.3f} ms "
+              f"(end time {summary.get('end_time_s', 0) * 1e3:.1f} ms) after {summary.get('cycles')} cycles, "
+              f"{summary.get('wall_seconds', 0):.0f} s wall time")
+    body = [f"<h1>{html.escape(summary.get('title') or 'Camouflet run')}</h1>",
+            f"<p>{W:g} kg TNT at {d:g} m depth; structure {standoff:g} – {standoff + length:g} m from the axis. "
+            f"Run: {status}.</p>"]
+    if summary.get("failed"):
+        body.append("<p><b>The run stopped early (numerical failure): the figures show the time simulated.</b></p>")
+    body += tables
+    for fname, caption in figures:
+        body.append(f"<figure><img src='report/{fname}'><figcaption>{html.escape(caption)}</figcaption></figure>")
+    page = ("<!doctype html><html><head><meta charset='utf-8'><title>Camouflet report</title><style>"
+            "body{font-family:sans-serif;max-width:70em;margin:auto}img{max-width:100%}"
+            "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:2px 8px}"
+            "figcaption{color:#444;margin-bottom:2em}</style></head><body>" + "\n".join(body) + "</body></html>\n")
+    path = os.path.join(out, "report.html")
+    with open(path, "w") as f:
+        f.write(page)
+    print(f"report: {os.path.abspath(path)} ({len(figures)} figures)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,68 @@
+// `camouflet report OUTDIR`: figures and one HTML page from a run's output
+// folder. The plotting is scripts/report.py (matplotlib from Debian's
+// python3-matplotlib, run with /usr/bin/python3); this command finds the
+// script next to the build, passes it this executable (for `empirical --csv`)
+// and returns its status.
+#include <fmt/format.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+
+namespace camouflet::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The script: $CAMOUFLET_REPORT_SCRIPT, else scripts/report.py beside the
+// build folder of this executable, else under the current folder.
+fs::path find_script(const fs::path& self) {
+  if (const char* env = std::getenv("CAMOUFLET_REPORT_SCRIPT")) return env;
+  for (const fs::path& p : {self.parent_path().parent_path() / "scripts" / "report.py",
+                            self.parent_path() / "scripts" / "report.py", fs::path("scripts") / "report.py"})
+    if (fs::exists(p)) return p;
+  return {};
+}
+
+std::string shell_quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app, CommandResult& result) {
+  auto outdir = std::make_shared<std::string>();
+  auto* cmd = app.add_subcommand("report", "Figures and report.html from a run's output folder");
+  cmd->add_option("OUTDIR", *outdir, "Output folder of `camouflet run`")->required();
+  cmd->callback([outdir, &result] {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (!fs::exists(fs::path(*outdir) / "summary.json")) {
+      std::cerr << fmt::format("error: {}: no summary.json here: not the output folder of a run\n", *outdir);
+      result.exit_code = exit_bad_input;
+      return;
+    }
+    const fs::path script = find_script(self);
+    if (script.empty()) {
+      std::cerr << "error: scripts/report.py not found (set CAMOUFLET_REPORT_SCRIPT)\n";
+      result.exit_code = exit_io_failure;
+      return;
+    }
+    const std::string command =
+        fmt::format("/usr/bin/python3 {} {} --camouflet {}", shell_quoted(script.string()),
+                    shell_quoted(*outdir), shell_quoted(self.string()));
+    const int status = std::system(command.c_str());
+    result.exit_code = status == -1        ? static_cast<int>(exit_io_failure)
+                       : WIFEXITED(status) ? WEXITSTATUS(status)
+                                           : static_cast<int>(exit_numerical_failure);
+  });
+}
+
+}  // namespace camouflet::app

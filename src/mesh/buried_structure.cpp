@@ -1,0 +1,375 @@
+#include "mesh/buried_structure.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <numbers>
+
+namespace camouflet {
+
+SourceLocation BuriedStructureSpec::location(const std::string& key) const {
+  const auto it = where.find(key);
+  return it != where.end() ? it->second : SourceLocation{source, 0, 0, key};
+}
+
+namespace {
+
+// A stretch of one axis meshed with a uniform target size (m).
+struct Zone {
+  double lo, hi, size;
+};
+
+// One interval of an axis: [a, b], its cells and grading (last/first cell size).
+struct Interval {
+  double a, b;
+  int cells;
+  double grading;
+};
+
+int cells_for(double length, double h0, double h1) {
+  // Cells of a size growing linearly from h0 to h1: integral of dx / h(x).
+  const double n =
+      std::abs(h1 / h0 - 1.0) < 0.05 ? length / (0.5 * (h0 + h1)) : length * std::log(h1 / h0) / (h1 - h0);
+  return std::max(1, static_cast<int>(std::ceil(n - 1e-6)));
+}
+
+void add_graded(std::vector<Interval>& out, double a, double b, double h0, double h1) {
+  const int n = cells_for(b - a, h0, h1);
+  out.push_back({a, b, n, n > 1 ? h1 / h0 : 1.0});
+}
+
+// Lays out one axis from `lo` to `hi`: breakpoints at every zone end and
+// material line, uniform cells inside zones, geometric grading in the gaps
+// (up to `gap_size` in their middle), growing to `far_size` at `hi`.
+std::vector<Interval> layout_axis(double lo, double hi, std::vector<double> lines,
+                                  const std::vector<Zone>& zones, double gap_size, double far_size) {
+  lines.push_back(lo);
+  lines.push_back(hi);
+  for (const Zone& z : zones) {
+    lines.push_back(std::clamp(z.lo, lo, hi));
+    lines.push_back(std::clamp(z.hi, lo, hi));
+  }
+  std::sort(lines.begin(), lines.end());
+  std::vector<double> unique;
+  for (double x : lines)
+    if (x >= lo && x <= hi && (unique.empty() || x - unique.back() > 1e-9)) unique.push_back(x);
+  const auto zone_size = [&](double x) {
+    double h = 0.0;
+    for (const Zone& z : zones)
+      if (x > z.lo && x < z.hi) h = h > 0.0 ? std::min(h, z.size) : z.size;
+    return h;  // 0: in no zone
+  };
+  std::vector<Interval> out;
+  for (std::size_t k = 0; k + 1 < unique.size(); ++k) {
+    const double a = unique[k], b = unique[k + 1];
+    const double inside = zone_size(0.5 * (a + b));
+    if (inside > 0.0) {
+      add_graded(out, a, b, inside, inside);
+      continue;
+    }
+    const double eps = 1e-6 * (hi - lo);
+    double hl = zone_size(a - eps), hr = zone_size(b + eps);
+    if (!(hl > 0.0)) hl = gap_size;
+    if (b >= hi) {
+      add_graded(out, a, b, hl, std::max(hl, far_size));
+      continue;
+    }
+    if (!(hr > 0.0)) hr = gap_size;
+    const double middle = std::min(gap_size, std::max({hl, hr, 0.25 * (b - a)}));
+    if (middle <= 1.05 * std::max(hl, hr)) {
+      add_graded(out, a, b, hl, hr);
+    } else {
+      const double m = 0.5 * (a + b);
+      add_graded(out, a, m, hl, middle);
+      add_graded(out, m, b, middle, hr);
+    }
+  }
+  return out;
+}
+
+std::vector<double> ends_of(const std::vector<Interval>& axis) {
+  std::vector<double> x{axis.front().a};
+  for (const Interval& i : axis) x.push_back(i.b);
+  return x;
+}
+
+enum class Fill { soil, charge, concrete, empty };
+
+struct Grid {
+  std::vector<Interval> r;      // along r
+  std::vector<Interval> depth;  // along depth y = -z, from the ground down
+};
+
+Fill fill_of(const BuriedStructureSpec& s, double half, double r, double y) {
+  if (r < half && std::abs(y - s.burst_depth) < half) return Fill::charge;
+  const double r0 = s.standoff, r1 = s.standoff + s.box_length;
+  const double y0 = s.top_depth, y1 = s.top_depth + s.box_height, t = s.wall_thickness;
+  if (r > r0 && r < r1 && y > y0 && y < y1) {
+    const bool interior = r > r0 + t && r < r1 - t && y > y0 + t && y < y1 - t;
+    return interior ? Fill::empty : Fill::concrete;
+  }
+  return Fill::soil;
+}
+
+void check(const BuriedStructureSpec& s, double a) {
+  const auto fail = [&](const std::string& key, const std::string& message) {
+    throw InputError(s.location(key), message);
+  };
+  const auto positive = [&](const std::string& key, double v) {
+    if (!(v > 0.0) || !std::isfinite(v)) fail(key, fmt::format("must be a positive number, got {}", v));
+  };
+  positive("charge.mass", s.charge_mass);
+  positive("charge.density", s.explosive_density);
+  positive("charge.depth", s.burst_depth);
+  positive("structure.standoff", s.standoff);
+  positive("structure.length", s.box_length);
+  positive("structure.height", s.box_height);
+  positive("structure.wall_thickness", s.wall_thickness);
+  positive("domain.radius", s.domain_radius);
+  positive("domain.depth", s.domain_depth);
+  positive("soil.wave_speed", s.soil_wave_speed);
+  positive("mesh.near_radius", s.near_radius);
+  positive("mesh.near", s.size_near);
+  positive("mesh.structure", s.size_structure);
+  positive("mesh.soil", s.size_soil);
+  positive("mesh.far", s.size_far);
+  positive("run.end_time", s.end_time);
+  if (!(s.top_depth >= 0.0))
+    fail("structure.top_depth", fmt::format("must be >= 0 (m below the ground), got {}", s.top_depth));
+  if (!(s.field_interval >= 0.0)) fail("run.field_interval", "must be >= 0");
+  if (!(s.gauge_interval >= 0.0)) fail("run.gauge_interval", "must be >= 0");
+  if (!(s.cfl > 0.0 && s.cfl <= 1.0)) fail("run.cfl", fmt::format("must lie in (0, 1], got {}", s.cfl));
+  if (s.gauge_count < 2 || s.gauge_count > 100) fail("gauges.count", "must be a whole number from 2 to 100");
+  if (2.0 * s.wall_thickness >= std::min(s.box_length, s.box_height))
+    fail("structure.wall_thickness", fmt::format("{} m walls leave no room inside a {} m x {} m box",
+                                                 s.wall_thickness, s.box_length, s.box_height));
+  if (s.burst_depth <= a)
+    fail("charge.depth",
+         fmt::format("the charge (radius {:.3f} m) must be buried: depth {} m", a, s.burst_depth));
+  if (s.standoff <= a)
+    fail("structure.standoff",
+         fmt::format("the structure overlaps the charge: standoff {} m <= charge radius {:.3f} m", s.standoff,
+                     a));
+  if (s.near_radius < a)
+    fail("mesh.near_radius",
+         fmt::format("must cover the charge (radius {:.3f} m), got {} m", a, s.near_radius));
+  if (s.near_radius >= s.standoff)
+    fail("mesh.near_radius",
+         fmt::format("the near-field (SPH) zone of radius {} m crosses the structure at r = {} m",
+                     s.near_radius, s.standoff));
+  if (s.burst_depth + a >= s.domain_depth)
+    fail("domain.depth", fmt::format("{} m does not contain the charge", s.domain_depth));
+  if (s.top_depth + s.box_height + s.size_structure >= s.domain_depth)
+    fail("domain.depth", fmt::format("{} m does not contain the structure", s.domain_depth));
+  if (s.standoff + s.box_length + s.size_structure >= s.domain_radius)
+    fail("domain.radius", fmt::format("{} m does not contain the structure", s.domain_radius));
+  if (s.has_rebar) {
+    if (!(s.rebar_cover >= 0.0)) fail("rebar.cover", fmt::format("must be >= 0 (m), got {}", s.rebar_cover));
+    if (!(s.rebar_cover < 0.5 * s.wall_thickness))
+      fail("rebar.cover",
+           fmt::format("{} m of cover leaves no room in a {} m wall", s.rebar_cover, s.wall_thickness));
+    if (!(s.rebar_ratio > 0.0 && s.rebar_ratio < 0.1))
+      fail("rebar.ratio", fmt::format("steel ratio must lie in (0, 0.1), got {}", s.rebar_ratio));
+    fail("rebar", "rebar layers need the rc branch's layer generator, which this build does not have yet");
+  }
+}
+
+Grid make_grid(const BuriedStructureSpec& s, double half) {
+  const double margin = 2.0 * s.size_structure;  // structure-sized cells reach this far into the soil
+  const double r0 = s.standoff, r1 = s.standoff + s.box_length, t = s.wall_thickness;
+  const double y0 = s.top_depth, y1 = s.top_depth + s.box_height;
+  Grid g;
+  g.r = layout_axis(0.0, s.domain_radius, {half, r0, r0 + t, r1 - t, r1},
+                    {{0.0, s.near_radius, s.size_near}, {r0 - margin, r1 + margin, s.size_structure}},
+                    s.size_soil, s.size_far);
+  std::vector<double> y_lines{s.burst_depth - half, s.burst_depth + half, y0, y0 + t, y1 - t, y1};
+  g.depth = layout_axis(0.0, s.domain_depth, y_lines,
+                        {{s.burst_depth - s.near_radius, s.burst_depth + s.near_radius, s.size_near},
+                         {y0 - margin, y1 + margin, s.size_structure}},
+                        s.size_soil, s.size_far);
+  return g;
+}
+
+double charge_radius_of(const BuriedStructureSpec& s) {
+  return std::cbrt(3.0 * s.charge_mass / (4.0 * std::numbers::pi * s.explosive_density));
+}
+
+// Gauge ranges (m from the charge centre) shared by groups A and B, so that
+// both have gauges at equal distances (Fig. 9): geometric from the edge of the
+// near field out to a scaled distance of 2.5 m/kg^(1/3) (Fig. 8b's range).
+std::vector<double> gauge_ranges(const BuriedStructureSpec& s, double far) {
+  const double w3 = std::cbrt(s.charge_mass);
+  const double first = std::max(s.near_radius + s.size_near, 0.3 * w3);
+  std::vector<double> out;
+  const double q = std::pow(far / first, 1.0 / (s.gauge_count - 1));
+  for (int k = 0; k < s.gauge_count; ++k) out.push_back(first * std::pow(q, k));
+  return out;
+}
+
+}  // namespace
+
+BuriedStructureLayout layout_buried_structure(const BuriedStructureSpec& spec) {
+  BuriedStructureLayout L;
+  L.charge_radius = charge_radius_of(spec);
+  check(spec, L.charge_radius);
+  // Equal-volume cylinder of height = diameter: pi b^2 2b = 4/3 pi a^3.
+  L.charge_half_size = std::cbrt(2.0 / 3.0) * L.charge_radius;
+  const Grid g = make_grid(spec, L.charge_half_size);
+  L.r_lines = ends_of(g.r);
+  for (double y : ends_of(g.depth)) L.z_lines.push_back(-y + 0.0);
+  std::reverse(L.z_lines.begin(), L.z_lines.end());
+  for (const Interval& i : g.r)
+    for (const Interval& j : g.depth) {
+      if (fill_of(spec, L.charge_half_size, 0.5 * (i.a + i.b), 0.5 * (j.a + j.b)) == Fill::empty) continue;
+      ++L.block_count;
+      L.element_count += static_cast<std::size_t>(i.cells) * static_cast<std::size_t>(j.cells);
+    }
+  // Image sources of the charge in the far edges, seen from the front wall's mid-height.
+  const double y9 = spec.top_depth + 0.5 * spec.box_height;
+  const double via_side = std::hypot(2.0 * spec.domain_radius - spec.standoff, spec.burst_depth - y9);
+  const double via_bottom = std::hypot(spec.standoff, 2.0 * spec.domain_depth - spec.burst_depth - y9);
+  L.reflection_time = std::min(via_side, via_bottom) / spec.soil_wave_speed;
+  return L;
+}
+
+std::string buried_structure_case(const BuriedStructureSpec& s, const std::string& regenerate) {
+  const BuriedStructureLayout L = layout_buried_structure(s);
+  const Grid g = make_grid(s, L.charge_half_size);
+  std::string b;
+  auto out = std::back_inserter(b);
+  const double w3 = std::cbrt(s.charge_mass);
+  fmt::format_to(
+      out,
+      "# Generated by `camouflet generate` (src/mesh/buried_structure.cpp, docs/buried-structure.md).\n"
+      "# Do not edit the mesh by hand: change the parameter file and regenerate:\n#   {}\n#\n",
+      regenerate);
+  fmt::format_to(
+      out,
+      "# {} kg of {} (sphere radius {:.3f} m, modelled as the equal-volume r-z square of half side\n"
+      "# {:.3f} m) centred {} m deep on the axis; RC box {} m x {} m, walls {} m, front face {} m from\n"
+      "# the axis, roof top {} m deep; domain {} m x {} m; {} blocks, {} elements.\n#\n",
+      s.charge_mass, s.explosive, L.charge_radius, L.charge_half_size, s.burst_depth, s.box_length,
+      s.box_height, s.wall_thickness, s.standoff, s.top_depth, s.domain_radius, s.domain_depth, L.block_count,
+      L.element_count);
+  // Machine-readable for scripts/report.py.
+  fmt::format_to(
+      out,
+      "# generator: charge_mass_kg={} burst_depth_m={} standoff_m={} box_length_m={} box_height_m={} "
+      "wall_thickness_m={} top_depth_m={}\n#\n",
+      s.charge_mass, s.burst_depth, s.standoff, s.box_length, s.box_height, s.wall_thickness, s.top_depth);
+  b +=
+      "# KNOWN LIMITATION: the paper models the charge and the soil around it with SPH joined to the FEM "
+      "mesh.\n"
+      "# The case reader does not yet read SPH parts or joins, so here the charge (JWL elements, programmed\n"
+      "# burn) and the near field are Lagrangian FEM: crater ejecta are not followed, and the run stops if\n"
+      "# elements next to the charge invert. Rebar layers are not yet included (plain concrete box).\n";
+  if (s.transmitting)
+    fmt::format_to(
+        out,
+        "# Far edges: transmitting (Lysmer-Kuhlemeyer dashpots). A wave reflected there anyway would\n"
+        "# reach the front wall after {:.1f} ms (at {} m/s).\n\n",
+        1e3 * L.reflection_time, s.soil_wave_speed);
+  else
+    fmt::format_to(
+        out,
+        "# NOTE: far edges FIXED (not transmitting): the reflection reaches the front wall at {:.1f} ms\n"
+        "# (at {} m/s); results after that time include the reflected wave.\n\n",
+        1e3 * L.reflection_time, s.soil_wave_speed);
+
+  fmt::format_to(out,
+                 "title = \"{}\"\n\n[run]\ngeometry = \"axisymmetric\"\nend_time = {}  # s\ncfl = {}\n\n",
+                 s.title, s.end_time, s.cfl);
+  fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
+                 s.gauge_interval);
+  fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,
+                 s.explosive);
+  fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
+
+  // One part per block of the tensor grid: adjacent blocks share nodes.
+  std::string boundaries;
+  auto bout = std::back_inserter(boundaries);
+  const char* far_type = s.transmitting ? "transmitting" : "fixed";
+  for (std::size_t i = 0; i < g.r.size(); ++i)
+    for (std::size_t j = 0; j < g.depth.size(); ++j) {
+      const Interval& ri = g.r[i];
+      const Interval& yj = g.depth[j];
+      const Fill fill = fill_of(s, L.charge_half_size, 0.5 * (ri.a + ri.b), 0.5 * (yj.a + yj.b));
+      if (fill == Fill::empty) continue;
+      const char* material = fill == Fill::charge ? "charge" : fill == Fill::concrete ? "concrete" : "soil";
+      const std::string name = fmt::format("{}_r{}_z{}", material, i, j);
+      // Grading along z runs from the block's deep edge up: the inverse of the depth grading.
+      fmt::format_to(out,
+                     "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\nblock = {{ origin = [{:.9g}, {:.9g}], "
+                     "size = [{:.9g}, {:.9g}], cells = [{}, {}], grading = [{:.9g}, {:.9g}] }}\n\n",
+                     name, material, ri.a, -yj.b + 0.0, ri.b - ri.a, yj.b - yj.a, ri.cells, yj.cells,
+                     ri.grading, 1.0 / yj.grading);
+      if (i == 0) fmt::format_to(bout, "[[boundary]]\ntype = \"axis\"\nset = \"{}.xmin\"\n\n", name);
+      if (i + 1 == g.r.size())
+        fmt::format_to(bout, "[[boundary]]\ntype = \"{}\"\nset = \"{}.xmax\"\n\n", far_type, name);
+      if (j + 1 == g.depth.size())
+        fmt::format_to(bout, "[[boundary]]\ntype = \"{}\"\nset = \"{}.ymin\"\n\n", far_type, name);
+    }
+  b += "# Boundaries: the axis r = 0; the far edges; the ground surface z = 0 is free.\n";
+  b += boundaries;
+
+  fmt::format_to(out, "[[detonation]]\nposition = [0.0, {:.9g}]  # m, the charge centre\ntime = 0.0\n\n",
+                 -s.burst_depth);
+
+  // Soil gauges (Fig. 8a): group A parallel to the ground at the charge depth,
+  // stopping short of the structure; group B on the 45-degree line down.
+  const double d = s.burst_depth;
+  const double a_limit = s.standoff - 2.0 * s.size_structure;
+  const double b_limit = std::min({2.5 * w3, 0.9 * (s.domain_depth - d) * std::numbers::sqrt2,
+                                   0.9 * s.domain_radius * std::numbers::sqrt2});
+  const auto ranges = gauge_ranges(s, b_limit);
+  const auto write_group = [&](const char* group, bool inclined, double limit) {
+    fmt::format_to(out, "[[gauges]]\nname = \"group_{}\"\npoints = [\n", group);
+    int k = 0;
+    for (double R : ranges) {
+      if (R > limit + 1e-9) break;
+      const double r = inclined ? R / std::numbers::sqrt2 : R;
+      const double z = inclined ? -d - R / std::numbers::sqrt2 : -d;
+      fmt::format_to(out,
+                     "  {{ name = \"{}{}\", position = [{:.6g}, {:.6g}] }},  # R = {:.3f} m, Z = {:.3f}\n",
+                     group, ++k, r, z, R, R / w3);
+    }
+    b += "]\n\n";
+  };
+  b += "# Soil gauges (Wang et al. 2005, Fig. 8a). Names: A1.. / B1..; A_k and B_k lie at the same range.\n";
+  write_group("A", false, a_limit);
+  write_group("B", true, b_limit);
+
+  // Structure targets (Fig. 10, our reading): on the wall mid-lines; 9 in the soil at the front wall.
+  const double r0 = s.standoff, t = s.wall_thickness, r1 = s.standoff + s.box_length;
+  const double y0 = s.top_depth, y1 = s.top_depth + s.box_height;
+  const double rf = r0 + 0.5 * t;   // front wall mid-line
+  const double yfl = y1 - 0.5 * t;  // floor mid-line
+  struct Target {
+    const char* name;
+    double r, y;
+    const char* where;
+  };
+  const Target targets[] = {
+      {"t1", rf, y0 + 0.5 * t, "front wall, top (roof corner)"},
+      {"t2", rf, 0.5 * (y0 + y1), "front wall, mid-height"},
+      {"t3", rf, yfl, "front wall, bottom (floor corner)"},
+      {"t4", r0 + 0.25 * s.box_length, yfl, "floor, quarter span"},
+      {"t5", r0 + 0.5 * s.box_length, yfl, "floor, mid-span"},
+      {"t6", r1 - 0.5 * t, yfl, "floor, back corner"},
+      {"t7", r0 + 0.5 * s.box_length, y0 + 0.5 * t, "roof, mid-span"},
+      {"t8", r1 - 0.5 * t, 0.5 * (y0 + y1), "back wall, mid-height"},
+      {"t9", r0 - 0.5 * std::min(s.size_structure, t), 0.5 * (y0 + y1),
+       "front wall, mid-height, soil side of the interface"},
+  };
+  b += "# Structure targets (Wang et al. 2005, Fig. 10; placement documented in docs/buried-structure.md).\n";
+  b += "[[gauges]]\nname = \"structure\"\npoints = [\n";
+  for (const Target& tg : targets)
+    fmt::format_to(out, "  {{ name = \"{}\", position = [{:.6g}, {:.6g}] }},  # {}\n", tg.name, tg.r, -tg.y,
+                   tg.where);
+  b += "]\n";
+  return b;
+}
+
+}  // namespace camouflet

@@ -1,0 +1,156 @@
+// The buried-structure generator (src/mesh/buried_structure.hpp): the case it
+// writes for the paper's example is read by the case reader into one fused
+// mesh of the right masses, its gauges sit where the paper puts them, and bad
+// parameters are refused naming the key.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "case/buried_structure_params.hpp"
+#include "case/case_reader.hpp"
+#include "common/verification.hpp"
+#include "mesh/buried_structure.hpp"
+
+namespace camouflet {
+namespace {
+
+BuriedStructureSpec paper_coarse() {
+  BuriedStructureSpec s;
+  s.size_near = 0.1;
+  s.size_structure = 0.05;
+  s.size_soil = 0.4;
+  s.size_far = 1.5;
+  s.domain_radius = 14.0;
+  s.domain_depth = 9.0;
+  return s;
+}
+
+// Volume of revolution of every element of `part_prefix` (m^3), by the
+// centroid rule (exact for the rectangles of the block generator).
+double volume_of(const Model& m, const std::string& part_prefix) {
+  double v = 0.0;
+  const auto& mesh = m.mesh;
+  for (std::size_t e = 0; e < mesh.element_count(); ++e) {
+    if (m.parts[static_cast<std::size_t>(mesh.element_part[e])].name.rfind(part_prefix, 0) != 0) continue;
+    double rmin = 1e300, rmax = -1e300, zmin = 1e300, zmax = -1e300;
+    for (int k = 0; k < 4; ++k) {
+      const auto n = static_cast<std::size_t>(mesh.connectivity[4 * e + static_cast<std::size_t>(k)]);
+      rmin = std::min(rmin, mesh.coordinates[2 * n]);
+      rmax = std::max(rmax, mesh.coordinates[2 * n]);
+      zmin = std::min(zmin, mesh.coordinates[2 * n + 1]);
+      zmax = std::max(zmax, mesh.coordinates[2 * n + 1]);
+    }
+    v += 2.0 * std::numbers::pi * 0.5 * (rmin + rmax) * (rmax - rmin) * (zmax - zmin);
+  }
+  return v;
+}
+
+TEST(BuriedStructure, PaperCaseReadsAsOneFusedMesh) {
+  const BuriedStructureSpec spec = paper_coarse();
+  const std::string text = buried_structure_case(spec, "test");
+  const Model model = read_case_text(text, "generated.toml");
+  const BuriedStructureLayout layout = layout_buried_structure(spec);
+  EXPECT_EQ(model.run.mode, GeometryMode::axisymmetric);
+  EXPECT_EQ(model.mesh.element_count(), layout.element_count);
+  // Fused: no two nodes at the same place (adjacent blocks share theirs).
+  std::vector<std::pair<long long, long long>> at;
+  for (std::size_t n = 0; n < model.mesh.node_count(); ++n)
+    at.emplace_back(std::llround(model.mesh.coordinates[2 * n] * 1e7),
+                    std::llround(model.mesh.coordinates[2 * n + 1] * 1e7));
+  std::sort(at.begin(), at.end());
+  EXPECT_EQ(std::adjacent_find(at.begin(), at.end()), at.end()) << "duplicate nodes: blocks not fused";
+  // No nodes inside the box (its interior is empty).
+  for (std::size_t n = 0; n < model.mesh.node_count(); ++n) {
+    const double r = model.mesh.coordinates[2 * n], z = model.mesh.coordinates[2 * n + 1];
+    EXPECT_FALSE(r > 6.1 + 1e-9 && r < 9.9 - 1e-9 && z < -0.1 - 1e-9 && z > -0.9 + 1e-9) << r << ", " << z;
+  }
+
+  // The charge: 100 kg of TNT as an equal-volume cylinder.
+  const double charge_volume = volume_of(model, "charge");
+  test::verify({"Buried-structure generator: charge volume", "100 kg / 1630 kg/m^3", 100.0 / 1630.0,
+                charge_volume, 1e-7, true, "m^3"});
+  // The concrete box: a ring of rectangular section with 0.1 m walls.
+  const double r0 = 6.0, r1 = 10.0, t = 0.1;
+  const auto ring = [](double a, double b, double h) { return std::numbers::pi * (b * b - a * a) * h; };
+  const double box = ring(r0, r1, 1.0) - ring(r0 + t, r1 - t, 1.0 - 2 * t);
+  test::verify({"Buried-structure generator: concrete volume", "ring section 4 m x 1 m, 0.1 m walls", box,
+                volume_of(model, "concrete"), 1e-7, true, "m^3"});
+
+  ASSERT_EQ(model.gauges.size(), 3u);
+  EXPECT_EQ(model.gauges[2].points.size(), 9u);  // targets 1-9
+  // Group B on the 45-degree line from the charge centre.
+  for (const auto& p : model.gauges[1].points)
+    EXPECT_NEAR(p.position[0], -0.5 - p.position[1], 1e-5) << p.name;
+  ASSERT_EQ(model.detonations.size(), 1u);
+}
+
+TEST(BuriedStructure, GradedFineNearTheChargeAndTheStructure) {
+  const BuriedStructureLayout L = layout_buried_structure(paper_coarse());
+  double near = 0.0, far = 0.0, wall = 1e9;
+  for (std::size_t k = 0; k + 1 < L.r_lines.size(); ++k) {
+    const double a = L.r_lines[k], b = L.r_lines[k + 1];
+    if (b <= 1.0) near = std::max(near, b - a);
+    if (a >= 6.0 && b <= 6.1 + 1e-9) wall = std::min(wall, b - a);
+    far = std::max(far, b - a);
+  }
+  // Block lines are not cells: check only that the wall is its own block and the grid reaches the edge.
+  EXPECT_NEAR(wall, 0.1, 1e-9);
+  EXPECT_NEAR(L.r_lines.back(), 14.0, 1e-12);
+  EXPECT_NEAR(L.z_lines.front(), -9.0, 1e-12);
+  EXPECT_GT(L.reflection_time, 0.005);
+  EXPECT_GT(far, near);
+}
+
+void expect_refused(BuriedStructureSpec s, const std::string& key) {
+  try {
+    layout_buried_structure(s);
+    ADD_FAILURE() << "accepted; expected an error naming " << key;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, key) << e.what();
+  }
+}
+
+TEST(BuriedStructure, BadInputNamesTheKey) {
+  auto s = paper_coarse();
+  s.standoff = 0.2;  // inside the charge (radius 0.245 m)
+  s.near_radius = 0.25;
+  expect_refused(s, "structure.standoff");
+  s = paper_coarse();
+  s.near_radius = 6.5;  // near-field (SPH) zone crossing the front wall
+  expect_refused(s, "mesh.near_radius");
+  s = paper_coarse();
+  s.has_rebar = true;
+  s.rebar_cover = -0.01;
+  expect_refused(s, "rebar.cover");
+  s = paper_coarse();
+  s.burst_depth = 0.2;  // not buried
+  expect_refused(s, "charge.depth");
+  s = paper_coarse();
+  s.domain_radius = 9.0;
+  expect_refused(s, "domain.radius");
+}
+
+TEST(BuriedStructure, ParameterFileKeysAndLines) {
+  const std::string text =
+      "[charge]\nmass = 100.0\ndepth = 0.5\n[structure]\nstandoff = 0.1\n[mesh]\nnear_radius = 0.3\n";
+  const BuriedStructureSpec s = read_buried_structure_params_text(text, "p.toml");
+  try {
+    layout_buried_structure(s);
+    ADD_FAILURE() << "accepted an overlapping structure";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "structure.standoff");
+    EXPECT_EQ(e.where().line, 5);
+    EXPECT_EQ(e.where().file, "p.toml");
+  }
+  try {
+    read_buried_structure_params_text("[charge]\nmas = 1\n", "p.toml");
+    ADD_FAILURE() << "accepted a misspelt key";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "charge.mas");
+  }
+}
+
+}  // namespace
+}  // namespace camouflet

@@ -83,12 +83,13 @@ std::string summary_json(const Model& model, const RunSummary& s,
                  s.failed ? "true" : "false");
   fmt::format_to(out, "  \"last_time_step\": {{\"dt_s\": {}, \"reason\": {}}},\n", number(s.last_limit.dt),
                  json_string(s.last_limit.reason));
-  fmt::format_to(out,
-                 "  \"energy_J\": {{\n    \"kinetic\": {},\n    \"internal\": {},\n    \"hourglass\": {},\n"
-                 "    \"viscous\": {},\n    \"eroded\": {},\n    \"boundary_work\": {},\n    \"initial_total\": {},\n"
-                 "    \"relative_error\": {}\n  }},\n",
-                 number(e.kinetic), number(e.internal), number(e.hourglass), number(e.viscous),
-                 number(e.eroded), number(e.boundary_work), number(e.initial_total), number(e.relative_error));
+  fmt::format_to(
+      out,
+      "  \"energy_J\": {{\n    \"kinetic\": {},\n    \"internal\": {},\n    \"hourglass\": {},\n"
+      "    \"viscous\": {},\n    \"eroded\": {},\n    \"boundary_work\": {},\n    \"initial_total\": {},\n"
+      "    \"relative_error\": {}\n  }},\n",
+      number(e.kinetic), number(e.internal), number(e.hourglass), number(e.viscous), number(e.eroded),
+      number(e.boundary_work), number(e.initial_total), number(e.relative_error));
   b += "  \"gauges\": {";
   for (std::size_t gi = 0; gi < gauges.size(); ++gi) {
     const auto& g = gauges[gi];

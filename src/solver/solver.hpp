@@ -127,8 +127,8 @@ class Solver {
 
   // Reinforcement and erosion (issue 6).
   EmbeddedBars<D> bars_;
-  bool erosion_ = false;                   // some material erodes
-  std::vector<SymTensor> total_strain_;    // per element, sum D dt (geometric-strain erosion)
+  bool erosion_ = false;                 // some material erodes
+  std::vector<SymTensor> total_strain_;  // per element, sum D dt (geometric-strain erosion)
   std::size_t eroded_count_ = 0;
 };
 

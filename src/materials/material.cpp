@@ -83,8 +83,8 @@ void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
   }
   if (damage_) damage_->update(pts, ctx);
 
-    // Trapezoidal p dv with the acting end pressure: e -= (p - p_eos) dv / 2.
-#pragma omp parallel for schedule(static)
+  // Trapezoidal p dv with the acting end pressure: e -= (p - p_eos) dv / 2.
+#pragma omp parallel for schedule(static) if (n > 2048)  // small batches: one thread
   for (std::size_t i = 0; i < n; ++i) {
     const double dv = 1.0 / pts.density[i] - 1.0 / pts.density_previous[i];
     pts.specific_energy[i] -= 0.5 * (pts.pressure[i] - eos_pressure[i]) * dv;

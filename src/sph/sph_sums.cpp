@@ -169,8 +169,10 @@ template <int D>
 void SphSystem<D>::drift(double dt) {
   const std::size_t n = p_.real;
   correction_current_ = false;
-  std::vector<Vec<D>> shift(n);
+  // The XSPH shift exists only when asked for: no allocation in the default cycle.
+  std::vector<Vec<D>> shift;
   if (options_.xsph > 0.0) {
+    shift.resize(n);
     // XSPH (Monaghan 1989): move with the velocity smoothed over neighbours.
     prepare_neighbours();
     const auto& x = p_.position;
@@ -191,7 +193,7 @@ void SphSystem<D>::drift(double dt) {
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec<D> dx = (p_.velocity[i] + shift[i]) * dt;
+    const Vec<D> dx = (shift.empty() ? p_.velocity[i] : p_.velocity[i] + shift[i]) * dt;
     p_.position[i] += dx;
     p_.displacement[i] += dx;
   }

@@ -142,7 +142,8 @@ TEST(IoFailure, FullDiskStopsWithExitThreeAfterALastCheckpoint) {
   const fs::path out = root / "out";
   fs::create_directories(out);
   fs::create_symlink("/dev/full", out / "fields_0001.vtu.tmp");
-  const auto r = test::run_camouflet("run --quiet -t 1 '" + case_file.string() + "' -o '" + out.string() + "'");
+  const auto r =
+      test::run_camouflet("run --quiet -t 1 '" + case_file.string() + "' -o '" + out.string() + "'");
   EXPECT_EQ(r.status, 3) << r.output;
   EXPECT_NE(r.output.find("error: I/O failure: "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;

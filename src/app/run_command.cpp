@@ -49,8 +49,9 @@ void add_run_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("-o,--output", args->output_dir, "Output folder (default: results/<case name>)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   cmd->add_option("-t,--threads", args->threads, "OpenMP threads (default: all)")->check(CLI::PositiveNumber);
-  cmd->add_option("--restart", args->restart,
-                  "Continue from a checkpoint file, or 'latest' (the newest usable one in the output folder)");
+  cmd->add_option(
+      "--restart", args->restart,
+      "Continue from a checkpoint file, or 'latest' (the newest usable one in the output folder)");
   cmd->callback([args, &result] {
     result.exit_code = run_guarded([&] {
       // Installed first: a signal while the case is read stops the run at its first cycle.

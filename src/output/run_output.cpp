@@ -165,7 +165,8 @@ namespace {
 // Keeps the first `lines` lines of a text file (throws when it has fewer).
 void truncate_lines(const fs::path& path, std::size_t lines) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw fs::filesystem_error("cannot reopen gauge CSV", path, std::make_error_code(std::errc::io_error));
+  if (!f)
+    throw fs::filesystem_error("cannot reopen gauge CSV", path, std::make_error_code(std::errc::io_error));
   std::uintmax_t offset = 0;
   std::size_t seen = 0;
   for (int c; seen < lines && (c = std::fgetc(f)) != EOF;) {

@@ -5,9 +5,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <optional>
-
 #include <filesystem>
+#include <optional>
 
 #include "output/progress.hpp"
 #include "output/run_output.hpp"
@@ -66,9 +65,9 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
         checkpoints.write(solver.cycle(), solver.time());
         summarise(fmt::format("interrupted by signal {}", signal), true);
         output.finish(solver.snapshot(), summary);
-        throw RunInterrupted(signal, fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
-                                                 signal, solver.cycle(), solver.time(),
-                                                 checkpoints.dir().string()));
+        throw RunInterrupted(
+            signal, fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
+                                signal, solver.cycle(), solver.time(), checkpoints.dir().string()));
       }
       if (checkpoints.due(solver.cycle())) checkpoints.write(solver.cycle(), solver.time());
       const EnergyBalance& energy = solver.energy();

@@ -110,7 +110,8 @@ TEST(Diagnostics, ParticleLeavingTheDomainIsNamedAndAFailureCheckpointWritten) {
     EXPECT_GE(e.id(), 1);
     EXPECT_LE(e.id(), 100);
     const std::string m = e.what();
-    EXPECT_TRUE(contains(m, "particle " + std::to_string(e.id()) + " (material 'striker', position (0.05")) << m;
+    EXPECT_TRUE(contains(m, "particle " + std::to_string(e.id()) + " (material 'striker', position (0.05"))
+        << m;
     EXPECT_TRUE(contains(m, "position at cycle ")) << m;
   }
   EXPECT_TRUE(fs::exists(out / "summary.json"));

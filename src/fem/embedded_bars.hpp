@@ -11,6 +11,7 @@
 // ordinary Material::update runs on a strain-rate tensor diag(d, d_l, d_l) in
 // the bar's own frame, with the lateral rate d_l found by a secant iteration
 // so that the lateral stress vanishes. docs/theory/reinforcement.md, section 2.
+#include "core/state_visitor.hpp"
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ class EmbeddedBars {
   double mass() const;                           // kg (plane strain: per metre of depth)
   // Smallest segment length / longitudinal wave speed (s) and its segment (0-based).
   double stable_time_step(const double* x, std::size_t& segment) const;
+  // Every array a restart needs (checkpoints, issue 9): the bars' material
+  // points, strains and the lateral-rate guesses of the last step.
+  void visit_state(StateVisitor& visitor);
 
   // --- per segment, for gauges and tests ---
   const std::string& set_name(std::size_t s) const;

@@ -24,6 +24,10 @@ void Solver<D>::visit_state(StateVisitor& v) {
   visit(v, "energy.boundary_work", energy_.boundary_work);
   visit(v, "energy.initial_total", energy_.initial_total);
   visit(v, "energy.relative_error", energy_.relative_error);
+  visit(v, "energy.eroded", energy_.eroded);
+  visit(v, "eroded_count", eroded_count_);
+  visit(v, "join_power", join_power_);
+  visit(v, "contact_power", contact_power_);
   visit(v, "internal_energy", internal_energy_);
   visit(v, "hourglass_stored", hourglass_stored_);
   visit(v, "hourglass_dissipated", hourglass_dissipated_);
@@ -55,6 +59,7 @@ void Solver<D>::visit_state(StateVisitor& v) {
     visit(v, "length", e.length);
     visit(v, "speed", e.speed);
     visit(v, "hourglass_displacement", e.hourglass_displacement);
+    visit(v, "eroded", e.eroded);
   }
   for (std::size_t m = 0; m < batches_.size(); ++m) {
     StateScope batch(v, "batch" + std::to_string(m));
@@ -62,6 +67,7 @@ void Solver<D>::visit_state(StateVisitor& v) {
   }
   boundaries_.visit_state(v);
   if (particles_) particles_->visit_state(v);
+  bars_.visit_state(v);
 }
 
 template void Solver<2>::visit_state(StateVisitor&);

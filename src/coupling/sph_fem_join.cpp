@@ -8,25 +8,12 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "core/sym_tensor_vec.hpp"
 #include "sph/artificial_stress.hpp"
 
 namespace camouflet {
 
 namespace {
-
-template <int D>
-Vec<D> contract_vec(const SymTensor& s, const Vec<D>& g) {
-  Vec<D> out;
-  if constexpr (D == 2) {
-    out[0] = s.xx * g[0] + s.xy * g[1];
-    out[1] = s.xy * g[0] + s.yy * g[1];
-  } else {
-    out[0] = s.xx * g[0] + s.xy * g[1] + s.zx * g[2];
-    out[1] = s.xy * g[0] + s.yy * g[1] + s.yz * g[2];
-    out[2] = s.zx * g[0] + s.yz * g[1] + s.zz * g[2];
-  }
-  return out;
-}
 
 // Cell key of a point on a grid of edge `cell`.
 template <int D>
@@ -298,9 +285,9 @@ double SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* 
         other += (p.tensile_term[i] + p.tensile_term[j]) * std::pow(fr, options_.artificial_stress_power);
       }
       const double mm = p.mass[i] * p.mass[j];
-      const Vec<D> force = (contract_vec<D>(own + other, grad) - grad * pi_ij) * mm;  // on particle i
+      const Vec<D> force = (apply<D>(own + other, grad) - grad * pi_ij) * mm;  // on particle i
       // Work not booked by particle i's internal energy (its own-stress part and half the viscous heat are).
-      power += mm * (dot(contract_vec<D>(other, grad), dv) - 0.5 * pi_ij * dot(grad, dv));
+      power += mm * (dot(apply<D>(other, grad), dv) - 0.5 * pi_ij * dot(grad, dv));
       Vec<D> reaction = force * -1.0;
       const Point& pt = points_[j - begin];
       for (int m = 0; m < pt.image_count; ++m) {

@@ -6,27 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/sym_tensor_vec.hpp"
 #include "sph/artificial_stress.hpp"
 #include "sph/sph_system.hpp"
 
 namespace camouflet::sph {
 
 namespace {
-
-// sigma . g for the in-plane (D = 2) or full (D = 3) components.
-template <int D>
-inline Vec<D> contract_vector(const SymTensor& s, const Vec<D>& g) {
-  Vec<D> out;
-  if constexpr (D == 2) {
-    out[0] = s.xx * g[0] + s.xy * g[1];
-    out[1] = s.xy * g[0] + s.yy * g[1];
-  } else {
-    out[0] = s.xx * g[0] + s.xy * g[1] + s.zx * g[2];
-    out[1] = s.xy * g[0] + s.yy * g[1] + s.yz * g[2];
-    out[2] = s.zx * g[0] + s.yz * g[1] + s.zz * g[2];
-  }
-  return out;
-}
 
 template <int D>
 bool invert(const double m[D][D], double inv[D][D]) {
@@ -113,7 +99,7 @@ void SphSystem<D>::compute_accelerations() {
         const double f = kernel_.value(r, hij) / kernel_.value(dp, hij);
         pair += (p_.tensile_term[i] + p_.tensile_term[j]) * std::pow(f, power);
       }
-      acc += (contract_vector<D>(pair, grad) - grad * pi_ij) * m[j];
+      acc += (apply<D>(pair, grad) - grad * pi_ij) * m[j];
     }
     if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
       acc[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
@@ -288,7 +274,7 @@ void SphSystem<D>::update_state(double dt, double time) {
         // Continuity with the pair gradient of the momentum sum (conjugate);
         // L with particle i's own correction, exact for linear fields.
         eta_rate += weight * dot(dv, pair_gradient(i, j, grad));
-        const Vec<D> own = contract_vector<D>(p_.correction[i], grad);
+        const Vec<D> own = apply<D>(p_.correction[i], grad);
         for (int a = 0; a < D; ++a)
           for (int b = 0; b < D; ++b) L[a][b] -= weight * dv[a] * own[b];
       } else {

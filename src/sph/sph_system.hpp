@@ -43,6 +43,7 @@
 
 #include "core/state_visitor.hpp"
 #include "core/sym_tensor.hpp"
+#include "core/sym_tensor_vec.hpp"
 #include "core/vec.hpp"
 #include "materials/material.hpp"
 #include "model/model.hpp"
@@ -163,17 +164,7 @@ class SphSystem {
   // antisymmetric 1/2 (B_i + B_j) grad_i W_ij (so momentum stays conserved).
   Vec<D> pair_gradient(std::size_t i, std::size_t j, const Vec<D>& grad) const {
     if (!options_.kernel_correction) return grad;
-    const SymTensor b = (p_.correction[i] + p_.correction[j]) * 0.5;
-    Vec<D> out;
-    if constexpr (D == 2) {
-      out[0] = b.xx * grad[0] + b.xy * grad[1];
-      out[1] = b.xy * grad[0] + b.yy * grad[1];
-    } else {
-      out[0] = b.xx * grad[0] + b.xy * grad[1] + b.zx * grad[2];
-      out[1] = b.xy * grad[0] + b.yy * grad[1] + b.yz * grad[2];
-      out[2] = b.zx * grad[0] + b.yz * grad[1] + b.zz * grad[2];
-    }
-    return out;
+    return apply<D>((p_.correction[i] + p_.correction[j]) * 0.5, grad);
   }
   void refresh_ghosts();
   void gather_material_state();

@@ -107,7 +107,10 @@ TEST(RunModel, RunsToTheEndTimeWithABalancedEnergy) {
   Model model = small_block();
   model.boundaries.push_back(test::velocity("block.xmin", 0, 2.0));  // a piston pushes the block
   model.run.end_time = 2e-3;
-  const RunSummary s = run_model(model, RunOptions{{}, ProgressStyle::none, 1});
+  RunOptions options;
+  options.progress = ProgressStyle::none;
+  options.threads = 1;
+  const RunSummary s = run_model(model, options);
   EXPECT_DOUBLE_EQ(s.time, 2e-3);
   EXPECT_GT(s.cycles, 10);
   EXPECT_FALSE(s.failed);

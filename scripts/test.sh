@@ -9,6 +9,9 @@ scripts/setup.sh
 rm -rf build/verification
 args=("$@")
 [ ${#args[@]} -eq 0 ] && args=(-LE long)
+# ctest runs tests side by side on few cores: spinning OpenMP threads would
+# steal them from each other.
+export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 status=0
 ctest --test-dir build --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" "${args[@]}" || status=$?
 python3 scripts/verification_report.py build/verification docs/verification-report.md || true

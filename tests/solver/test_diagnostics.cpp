@@ -47,24 +47,6 @@ TEST(Diagnostics, NonFiniteVelocityNamesTheNode) {
   }
 }
 
-TEST(Diagnostics, InvertedElementNamesMaterialAndCentre) {
-  test::use_threads(1);
-  Model model = block();
-  model.run.cfl = 8.0;  // far beyond stability: the corner node overshoots its element
-  model.mesh.node_sets["corner"] = {15};
-  model.boundaries.push_back(test::velocity("corner", 0, -3000.0));
-  model.boundaries.push_back(test::velocity("corner", 1, -3000.0));
-  Solver<2> solver(model);
-  try {
-    for (int k = 0; k < 50; ++k) solver.step();
-    FAIL() << "the element must invert";
-  } catch (const NumericalError& e) {
-    EXPECT_EQ(e.quantity(), "volume");
-    EXPECT_EQ(e.kind(), EntityKind::element);
-    EXPECT_TRUE(contains(e.what(), "(material 'solid', centre (")) << e.what();
-  }
-}
-
 TEST(Diagnostics, NodeLeavingTheDomainIsNamed) {
   test::use_threads(1);
   Model model = block();

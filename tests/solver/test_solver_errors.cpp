@@ -74,6 +74,8 @@ TEST(SolverErrors, ElementInvertedDuringTheRunIsNamed) {
     EXPECT_EQ(e.quantity(), "volume");
     EXPECT_GE(e.cycle(), 0);
     EXPECT_NE(std::string(e.what()).find("solid"), std::string::npos) << e.what();
+    // The diagnostic also says where: material and element centre (issue 9).
+    EXPECT_NE(std::string(e.what()).find("(material 'solid', centre ("), std::string::npos) << e.what();
   }
 }
 

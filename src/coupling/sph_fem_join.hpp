@@ -56,23 +56,38 @@ class SphFemJoin {
   std::size_t point_count() const { return points_.size(); }
 
   // After SphSystem::compute_accelerations (t_n): f (n*D) += the reactions of
-  // the pair forces on the coupling points, spread over the element nodes.
-  // Returns the join power (W): the pair work conjugate to the elements'
-  // stress, which no internal energy books.
-  double add_reactions(const sph::SphSystem<D>& particles, double* f) const;
+  // the pair forces on the coupling points, spread over the interface face nodes.
+  // Keeps the pairs for settle().
+  void add_reactions(const sph::SphSystem<D>& particles, double* f);
+  // After the kick (velocities at n+1/2, coupling points refreshed): the elements
+  // take their half of the viscous pair heating over the impulse dt (J into their
+  // specific energy); returns the join work over dt (J): the pair work conjugate
+  // to the elements' stress, which no internal energy books.
+  double settle(const sph::SphSystem<D>& particles, double dt, std::vector<MaterialPoints>& batches);
 
  private:
   struct Point {
     std::size_t element = 0;
     std::array<std::uint8_t, 3> planes{};  // images: planes applied in order
     std::uint8_t image_count = 0;
-    double h0 = 0.0;       // m, smoothing length at the reference density
-    double rho0 = 0.0;     // kg/m^3
-    std::size_t face = 0;  // index into faces_: where its reactions go
+    double h0 = 0.0;             // m, smoothing length at the reference density
+    double rho0 = 0.0;           // kg/m^3
+    std::size_t face = 0;        // index into faces_: where its reactions go
+    double planar_volume = 0.0;  // m^3 (m^2 per radian x 2 pi in r-z), at set-up
+    double normalisation = 1.0;  // n: discrete kernel normalisation around the point (fill())
   };
+  struct Pair {
+    std::size_t i = 0, j = 0;  // particle, point (index in the particle arrays)
+    Vec<D> other{};            // N, force on i from the element's stress
+    Vec<D> viscous{};          // N, m_i m_j Pi_ij grad W (the viscous force on i is minus this)
+    Vec<D> dv_old{};           // m/s, v_i - v_j at n-1/2
+  };
+  std::vector<Pair> pairs_;
   static constexpr int face_nodes = D == 2 ? 2 : 4;
   std::vector<std::array<std::int64_t, face_nodes>> faces_;  // interface faces
   void fill(sph::ParticleArrays<D>& p, std::size_t begin) const;
+  void compute_normalisation(const sph::SphSystem<D>& particles, const std::vector<Point>& candidates,
+                             const std::vector<Vec<D>>& where, double reach);
   void find_interface_faces(const Model& model, const FemElements<D>& elements,
                             const sph::SphSystem<D>& particles,
                             const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,

@@ -212,7 +212,7 @@ void Solver<D>::add_forces() {
   hourglass_stored_ = elements_.add_internal_forces(position_.data(), velocity_.data(), force_.data(),
                                                     f_hourglass, hourglass_, dt_);
   if (particles_) particles_->compute_accelerations();  // SPH sums at t_n
-  if (join_) join_power_ = join_->add_reactions(*particles_, force_.data());  // reactions on the joined nodes
+  if (join_) join_->add_reactions(*particles_, force_.data());  // reactions on the joined nodes
   if (particles_ && !contact_.empty())
     contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(), 0.5 * (dt_ + dt_next_));
 }
@@ -247,6 +247,10 @@ void Solver<D>::constrain_velocities() {
   const double reaction_work = boundaries_.constrain(velocity_.data(), velocity_old_.data(),
                                                      node_mass_.data(), time_ + 0.5 * dt_next_, dt_, dt_mean);
   energy_.boundary_work += reaction_work + boundaries_.load_work(velocity_old_.data(), dt_);
+  if (join_) {  // the elements' half of the viscous heating, and the join work (coupling/sph_fem_join.hpp)
+    const double work = join_->settle(*particles_, dt_mean, batches_);
+    join_power_ = dt_mean > 0.0 ? work / dt_mean : 0.0;
+  }
   energy_.boundary_work += (join_power_ + contact_power_) * dt_mean;  // join and contact work (coupling/)
 }
 

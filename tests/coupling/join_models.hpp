@@ -22,8 +22,13 @@ struct JoinCrossing {
   double reflected_sph_to_fem = 0.0;  // m/s, peak from the interface at 0.8 L
   double in_particles = 0.0;          // m/s, peak at the particle nearest 0.6 L
   double transmitted = 0.0;           // m/s, peak at the FEM gauge 1.0 L
-  double energy_change = 0.0;         // relative change of E_kin + E_int + E_hg over the crossing
-  double join_work = 0.0;             // J, join work booked over the crossing, over the pulse energy
+  // Either side of each join, 0.05 L (10 cells) away from it: the join's own transmission.
+  double before_fem_to_sph = 0.0;  // m/s, peak at the FEM gauge 0.35 L
+  double after_fem_to_sph = 0.0;   // m/s, peak at the particle nearest 0.45 L
+  double before_sph_to_fem = 0.0;  // m/s, peak at the particle nearest 0.75 L
+  double after_sph_to_fem = 0.0;   // m/s, peak at the FEM gauge 0.85 L
+  double energy_change = 0.0;      // relative change of E_kin + E_int + E_hg over the crossing
+  double join_work = 0.0;          // J, join work booked over the crossing, over the pulse energy
 };
 
 inline TimeHistory sin2_pulse(double duration) {
@@ -108,14 +113,20 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
     return best;
   };
   const std::size_t g_in = nearest_node(0.2), g_out = nearest_node(1.0);
+  const std::size_t g_before = nearest_node(0.35), g_after = nearest_node(0.85);
   const auto& pa = solver.particles()->particles();
-  std::size_t g_sph = 0;
-  double best = 1e300;
-  for (std::size_t i = 0; i < pa.real; ++i) {
-    double d2 = 0.0;
-    for (int k = 0; k < D; ++k) d2 += std::pow(pa.position[i][k] - (k == along ? 0.6 : 0.5 * width), 2);
-    if (d2 < best) best = d2, g_sph = i;
-  }
+  auto nearest_particle = [&](double s) {
+    std::size_t best_i = 0;
+    double best = 1e300;
+    for (std::size_t i = 0; i < pa.real; ++i) {
+      double d2 = 0.0;
+      for (int k = 0; k < D; ++k) d2 += std::pow(pa.position[i][k] - (k == along ? s : 0.5 * width), 2);
+      if (d2 < best) best = d2, best_i = i;
+    }
+    return best_i;
+  };
+  const std::size_t g_sph = nearest_particle(0.6), g_sph_in = nearest_particle(0.45),
+                    g_sph_out = nearest_particle(0.75);
 
   JoinCrossing r;
   double e_start = 0.0, w_start = 0.0;
@@ -135,6 +146,13 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
     else if (t > 1.2)
       r.reflected_sph_to_fem = std::max(r.reflected_sph_to_fem, v_in);
     r.in_particles = std::max(r.in_particles, v_sph);
+    auto node_v = [&](std::size_t n) {
+      return std::abs(solver.velocity()[n * D + static_cast<std::size_t>(along)]);
+    };
+    r.before_fem_to_sph = std::max(r.before_fem_to_sph, node_v(g_before));
+    r.after_sph_to_fem = std::max(r.after_sph_to_fem, node_v(g_after));
+    r.after_fem_to_sph = std::max(r.after_fem_to_sph, std::abs(pa.velocity[g_sph_in][along]));
+    r.before_sph_to_fem = std::max(r.before_sph_to_fem, std::abs(pa.velocity[g_sph_out][along]));
     r.transmitted = std::max(r.transmitted, v_out);
     const EnergyBalance& e = solver.energy();
     const double total = e.kinetic + e.internal + e.hourglass;

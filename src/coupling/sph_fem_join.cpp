@@ -307,6 +307,9 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
             ? sph::artificial_stress<D>(sigma, options_.artificial_stress_epsilon, w / (eta * eta * n))
             : SymTensor{};
     p.wave_speed[j] = el.wave_speed[e];
+    // The element has no switch of its own (its shocks are the FEM's q): the least alpha.
+    p.viscosity_alpha[j] =
+        options_.viscosity_switch ? options_.viscosity_alpha_min : options_.viscosity_alpha;
     p.correction[j] =
         options_.kernel_correction ? SymTensor::identity() * (1.0 / pt.normalisation) : SymTensor::identity();
   }
@@ -318,7 +321,6 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
   const auto& p = particles.particles();
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
-  const double alpha = options_.viscosity_alpha, beta = options_.viscosity_beta;
   pairs_.clear();
   for (std::size_t i = 0; i < p.real; ++i) {
     for (const std::uint32_t j : particles.neighbours().neighbours(i)) {
@@ -336,7 +338,9 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
       if (vr < 0.0) {
         const double mu = hij * vr / (r2 + 0.01 * hij * hij);
         const double c_mean = 0.5 * (p.wave_speed[i] + p.wave_speed[j]);
-        pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta_i + eta_j));
+        const sph::PairViscosity q =
+            sph::pair_viscosity(options_, p.viscosity_alpha[i], p.viscosity_alpha[j]);
+        pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta_i + eta_j));
       }
       const SymTensor own =
           options_.volume_form ? p.stress_term[i] * (1.0 / eta_j) : p.stress_term[i] * (1.0 / eta_i);
@@ -356,8 +360,21 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
         const int axis = planes_[pt.planes[static_cast<std::size_t>(m)]].axis;
         reaction[axis] = -reaction[axis];
       }
-      for (const std::int64_t n : faces_[pt.face])
-        for (int d = 0; d < D; ++d) f[n * D + d] += reaction[d] / face_nodes;
+      const auto& face = faces_[pt.face];
+      std::array<double, face_nodes> share;
+      share.fill(1.0 / face_nodes);
+      if (axisymmetric_) {
+        // Ring weights of a uniform traction on the segment (the FEM's own lumping, and the
+        // nodes' masses, grow with r): (2 r_a + r_b) / 3 (r_a + r_b) and (r_a + 2 r_b) / 3 (r_a + r_b).
+        const double ra = std::abs(x_[face[0] * D]), rb = std::abs(x_[face[1] * D]);
+        if (ra + rb > 0.0) {
+          share[0] = (2.0 * ra + rb) / (3.0 * (ra + rb));
+          share[1] = (ra + 2.0 * rb) / (3.0 * (ra + rb));
+        }
+      }
+      for (int a = 0; a < face_nodes; ++a)
+        for (int d = 0; d < D; ++d)
+          f[face[static_cast<std::size_t>(a)] * D + d] += reaction[d] * share[static_cast<std::size_t>(a)];
     }
   }
 }

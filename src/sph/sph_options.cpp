@@ -21,6 +21,12 @@ SphOptions read_sph_options(Parameters& block) {
     block.fail("h_min_factor", "smoothing-length bounds inverted: h_min_factor > h_max_factor");
   o.viscosity_alpha = block.non_negative("viscosity_alpha", o.viscosity_alpha);
   o.viscosity_beta = block.non_negative("viscosity_beta", o.viscosity_beta);
+  o.viscosity_switch = block.flag("viscosity_switch", o.viscosity_switch);
+  o.viscosity_alpha_min = block.non_negative("viscosity_alpha_min", o.viscosity_alpha_min);
+  if (o.viscosity_switch && o.viscosity_alpha_min > o.viscosity_alpha)
+    block.fail("viscosity_alpha_min",
+               "viscosity_alpha_min is larger than viscosity_alpha (the switch's maximum)");
+  o.viscosity_switch_decay = block.positive("viscosity_switch_decay", o.viscosity_switch_decay);
   o.artificial_stress = block.flag("artificial_stress", o.artificial_stress);
   o.artificial_stress_epsilon =
       block.in_range("artificial_stress_epsilon", 0.0, 1.0, o.artificial_stress_epsilon);

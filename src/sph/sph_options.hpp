@@ -19,6 +19,16 @@ struct SphOptions {
   // Monaghan artificial viscosity (Monaghan 1992, eq. 4.2): Pi_ij = (-alpha c mu + beta mu^2) / rho_ij.
   double viscosity_alpha = 1.0;
   double viscosity_beta = 2.0;
+  // Time-dependent viscosity (Morris & Monaghan 1997, J. Comput. Phys. 136, 41-50, "A switch
+  // to reduce SPH viscosity"): each particle carries its own alpha_i, relaxing to
+  // viscosity_alpha_min over tau = h / (viscosity_switch_decay c) and driven up towards
+  // viscosity_alpha by compression, d alpha/dt = -(alpha - alpha_min)/tau + max(-div v, 0)
+  // (alpha_max - alpha) (the (alpha_max - alpha) factor of Rosswog et al. 2000, MNRAS 317,
+  // 333). A pair uses alpha_ij = (alpha_i + alpha_j)/2 and beta_ij = beta alpha_ij / alpha_max.
+  // Off by default: alpha = viscosity_alpha everywhere.
+  bool viscosity_switch = false;
+  double viscosity_alpha_min = 0.1;
+  double viscosity_switch_decay = 0.2;
   // Artificial stress against the tensile instability (Gray, Monaghan & Swift
   // 2001, CMAME 190, eqs. 3.1-3.3; Monaghan 2000, JCP 159): R = -eps sigma'/rho^2
   // on tensile principal stresses, weighted by (W(r)/W(dp))^n.
@@ -40,6 +50,16 @@ struct SphOptions {
   // Neighbour-list skin as a fraction of the smallest initial smoothing length.
   double skin_factor = 0.3;
 };
+
+// Linear and quadratic viscosity coefficients of a pair from the particles' alpha (see above).
+struct PairViscosity {
+  double alpha = 0.0, beta = 0.0;
+};
+inline PairViscosity pair_viscosity(const SphOptions& o, double alpha_i, double alpha_j) {
+  if (!o.viscosity_switch || !(o.viscosity_alpha > 0.0)) return {o.viscosity_alpha, o.viscosity_beta};
+  const double a = 0.5 * (alpha_i + alpha_j);
+  return {a, o.viscosity_beta * a / o.viscosity_alpha};
+}
 
 // Reads the optional keys of an `[sph]` block (names as the members above;
 // `kernel` a string). Bounds inverted or out of range -> InputError naming the key.

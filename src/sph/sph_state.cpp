@@ -41,6 +41,7 @@ void SphSystem<D>::visit_state(StateVisitor& v) {
   visit(v, "tensile_term", p.tensile_term);
   visit(v, "wave_speed", p.wave_speed);
   visit(v, "correction", p.correction);
+  visit(v, "viscosity_alpha", p.viscosity_alpha);
   visit(v, "acceleration", p.acceleration);
   visit(v, "displacement", p.displacement);
   visit(v, "density", p.density);

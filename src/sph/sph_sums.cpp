@@ -59,7 +59,6 @@ void SphSystem<D>::compute_accelerations() {
   prepare_neighbours();
   if (options_.kernel_correction && !correction_current_) compute_correction();
 
-  const double alpha = options_.viscosity_alpha, beta = options_.viscosity_beta;
   const bool tensile = options_.artificial_stress;
   const bool volume_form = options_.volume_form;
   const double power = options_.artificial_stress_power;
@@ -88,7 +87,8 @@ void SphSystem<D>::compute_accelerations() {
       if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
         const double mu = hij * vr / (r2 + 0.01 * hij * hij);
         const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-        pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+        const PairViscosity q = pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]);
+        pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
         mu_max = std::max(mu_max, -mu);
       }
       // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
@@ -122,7 +122,6 @@ void SphSystem<D>::kick(double dt) {
   // 1/2 sum_ij m_i m_j Pi_ij vbar_ij . grad W dt with vbar the mean of the old
   // and new velocities; each particle gets its half (Monaghan 1992, eq. 4.6)
   // with that same mean velocity, so the exchange is exact.
-  const double alpha = options_.viscosity_alpha, beta = options_.viscosity_beta;
   const auto& x = p_.position;
   const auto& m = p_.mass;
   const auto& eta = p_.planar_density;
@@ -142,7 +141,8 @@ void SphSystem<D>::kick(double dt) {
       if (vr >= 0.0) continue;
       const double mu = hij * vr / (r2 + 0.01 * hij * hij);
       const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-      const double pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+      const PairViscosity q = pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]);
+      const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
       const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(std::sqrt(r2), hij));
       const Vec<D> mean_dv = (dv + (v_new[i] - v_new[j])) * 0.5;
       heat += 0.5 * m[j] * pi_ij * dot(mean_dv, grad);
@@ -293,6 +293,16 @@ void SphSystem<D>::update_state(double dt, double time) {
                 0.5 * (L[1][2] + L[2][1]),
                 0.5 * (L[2][0] + L[0][2])};
     p_.strain_rate[i] = d;
+    if (options_.viscosity_switch) {
+      // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
+      // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
+      const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
+      const double source = std::max(-d.trace(), 0.0);
+      const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
+      const double b = 1.0 / tau + source;
+      const double target = a / b;
+      p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
+    }
     p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
     // Continuity, integrated as d ln(eta) so that eta stays positive.
     eta_new[i] = eta[i] * std::exp(dt * eta_rate);

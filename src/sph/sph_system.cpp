@@ -41,6 +41,8 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   p_.stress_term.resize(n);
   p_.tensile_term.resize(n);
   p_.wave_speed.resize(n);
+  p_.viscosity_alpha.assign(
+      n, options_.viscosity_switch ? options_.viscosity_alpha_min : options_.viscosity_alpha);
   p_.correction.assign(n, SymTensor::identity());
   p_.acceleration.assign(n, Vec<D>{});
   p_.displacement.assign(n, Vec<D>{});
@@ -152,6 +154,7 @@ void SphSystem<D>::refresh_ghosts() {
     p_.planar_density[k] = p_.planar_density[s];
     p_.smoothing_length[k] = p_.smoothing_length[s];
     p_.wave_speed[k] = p_.wave_speed[s];
+    p_.viscosity_alpha[k] = p_.viscosity_alpha[s];
     p_.stress_term[k] = mirror_tensor(p_.stress_term[s], plane.axis);
     p_.tensile_term[k] = mirror_tensor(p_.tensile_term[s], plane.axis);
     p_.correction[k] = mirror_tensor(p_.correction[s], plane.axis);
@@ -182,6 +185,7 @@ void SphSystem<D>::prepare_neighbours() {
   p_.tensile_term.resize(total);
   p_.wave_speed.resize(total);
   p_.correction.resize(total, SymTensor::identity());
+  p_.viscosity_alpha.resize(total, options_.viscosity_alpha);
   refresh_ghosts();
   search_.build(p_.position, p_.smoothing_length, n, skin_);
 }

@@ -71,6 +71,7 @@ struct ParticleArrays {
   std::vector<SymTensor> tensile_term;   // artificial stress R, scaled as sigma / rho^2
   std::vector<double> wave_speed;        // m/s, sqrt(c^2 + 4G/3rho)
   std::vector<SymTensor> correction;     // kernel-gradient correction B = M^-1 (identity when off)
+  std::vector<double> viscosity_alpha;   // linear viscosity coefficient (SphOptions::viscosity_switch)
   // --- particles only ---
   std::vector<Vec<D>> acceleration;                // m/s^2
   std::vector<Vec<D>> displacement;                // m, from the initial position

@@ -360,21 +360,10 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
         const int axis = planes_[pt.planes[static_cast<std::size_t>(m)]].axis;
         reaction[axis] = -reaction[axis];
       }
-      const auto& face = faces_[pt.face];
-      std::array<double, face_nodes> share;
-      share.fill(1.0 / face_nodes);
-      if (axisymmetric_) {
-        // Ring weights of a uniform traction on the segment (the FEM's own lumping, and the
-        // nodes' masses, grow with r): (2 r_a + r_b) / 3 (r_a + r_b) and (r_a + 2 r_b) / 3 (r_a + r_b).
-        const double ra = std::abs(x_[face[0] * D]), rb = std::abs(x_[face[1] * D]);
-        if (ra + rb > 0.0) {
-          share[0] = (2.0 * ra + rb) / (3.0 * (ra + rb));
-          share[1] = (ra + 2.0 * rb) / (3.0 * (ra + rb));
-        }
-      }
-      for (int a = 0; a < face_nodes; ++a)
-        for (int d = 0; d < D; ++d)
-          f[face[static_cast<std::size_t>(a)] * D + d] += reaction[d] * share[static_cast<std::size_t>(a)];
+      // Equal shares, also in r-z: the one-point element's own nodal forces on a face are equal
+      // (ring volume at the centre x shape gradient), and so are its lumped node masses.
+      for (const std::int64_t n : faces_[pt.face])
+        for (int d = 0; d < D; ++d) f[n * D + d] += reaction[d] / face_nodes;
     }
   }
 }

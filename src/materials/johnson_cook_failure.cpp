@@ -25,7 +25,8 @@ double johnson_cook_failure_strain(const JohnsonCookFailureParameters& p, double
     thermal_factor = 1.0 + p.d5 * std::clamp(t, 0.0, 1.0);
   }
   // Johnson & Cook 1985, eq. 4.
-  return (p.d1 + p.d2 * std::exp(p.d3 * triaxiality)) * rate_factor * thermal_factor;
+  const double eps_f = (p.d1 + p.d2 * std::exp(p.d3 * triaxiality)) * rate_factor * thermal_factor;
+  return std::max(eps_f, p.minimum_failure_strain);
 }
 
 void JohnsonCookFailure::register_state(MaterialPoints& pts) const {
@@ -70,6 +71,7 @@ std::shared_ptr<const JohnsonCookFailure> make_johnson_cook_failure(Parameters& 
   p.d5 = params.number("d5", 0.0);
   p.reference_strain_rate = params.positive("reference_strain_rate", 1.0);
   p.room_temperature = params.positive("room_temperature", 300.0);
+  p.minimum_failure_strain = params.non_negative("minimum_failure_strain", 0.0);
   if (p.d5 != 0.0) {
     p.melt_temperature = params.number("melt_temperature");
     if (!(p.melt_temperature > p.room_temperature))

@@ -4,9 +4,9 @@
 // for metals subjected to large strains, high strain rates and high
 // temperatures", 7th Int. Symp. Ballistics, Tables 1-2). Bulk response: the
 // Mie-Grueneisen fits and shear moduli of Steinberg 1996 (UCRL-MA-106439),
-// which Johnson & Cook do not give. Fracture constants: Johnson & Cook 1985
-// (Eng. Fract. Mech. 21, 31-48, Table 2); the presets carry them so
-// `erosion = { damage = 1 }` is all a case needs for failure.
+// which Johnson & Cook do not give. No damage block: failure is the case's
+// choice (§5.1 lists the Johnson & Cook 1985 fracture constants of these
+// metals and why a negative D1 needs care).
 #include "materials/registry.hpp"
 
 namespace camouflet {
@@ -21,7 +21,6 @@ struct JohnsonCookSet {
   double density, c0, s, gamma0;      // kg/m^3, m/s, -, -
   double shear_modulus;               // Pa
   double a, b, n, c, m, t_melt, c_v;  // Pa, Pa, -, -, -, K, J/(kg K)
-  double d1, d2, d3, d4, d5;          // fracture constants
 };
 
 MaterialPreset johnson_cook_preset(const std::string& name, const std::string& description,
@@ -47,34 +46,20 @@ MaterialPreset johnson_cook_preset(const std::string& name, const std::string& d
   strength("room_temperature", 294.0);
   strength("melt_temperature", j.t_melt);
   strength("specific_heat", j.c_v);
-  auto damage = [&](const std::string& key, double v) {
-    m.damage.set_number(key, v, where(name, "damage." + key));
-  };
-  m.damage.set_string("type", "johnson_cook", where(name, "damage.type"));
-  damage("d1", j.d1);
-  damage("d2", j.d2);
-  damage("d3", j.d3);
-  damage("d4", j.d4);
-  damage("d5", j.d5);
-  damage("room_temperature", 294.0);
-  damage("melt_temperature", j.t_melt);
   return m;
 }
 
 MaterialPreset copper_ofhc() {
   return johnson_cook_preset(
-      "copper_ofhc_jc1983",
-      "OFHC copper, Johnson-Cook (Johnson & Cook 1983, 1985; EOS and G: Steinberg 1996)",
-      {8960.0, 3940.0, 1.49, 2.02, 47.7e9, 90e6, 292e6, 0.31, 0.025, 1.09, 1356.0, 383.0, 0.54, 4.89, -3.03,
-       0.014, 1.12});
+      "copper_ofhc_jc1983", "OFHC copper, Johnson-Cook (Johnson & Cook 1983; EOS and G: Steinberg 1996)",
+      {8960.0, 3940.0, 1.49, 2.02, 47.7e9, 90e6, 292e6, 0.31, 0.025, 1.09, 1356.0, 383.0});
 }
 
 MaterialPreset steel_4340() {
   return johnson_cook_preset(
       "steel_4340_jc1983",
-      "4340 steel (Rc 30), Johnson-Cook (Johnson & Cook 1983, 1985; EOS and G: Steinberg 1996)",
-      {7830.0, 4578.0, 1.33, 1.67, 77.5e9, 792e6, 510e6, 0.26, 0.014, 1.03, 1793.0, 477.0, -0.80, 2.10, -0.50,
-       0.002, 0.61});
+      "4340 steel (Rc 30), Johnson-Cook (Johnson & Cook 1983; EOS and G: Steinberg 1996)",
+      {7830.0, 4578.0, 1.33, 1.67, 77.5e9, 792e6, 510e6, 0.26, 0.014, 1.03, 1793.0, 477.0});
 }
 
 }  // namespace

@@ -103,6 +103,13 @@ TEST(JohnsonCookFailure, FailureStrainFormula) {
   EXPECT_NEAR(johnson_cook_failure_strain(p, 0.0, 1000.0, t_half),
               (-0.80 + 2.10) * (1.0 + 0.002 * std::log(1000.0)) * (1.0 + 0.61 * 0.5), 1e-14);
   EXPECT_DOUBLE_EQ(johnson_cook_failure_strain(p, 0.0, 1e-3, 300.0), -0.80 + 2.10);
+  // Past sigma* = ln(0.8 / 2.1) / -0.5 = 1.93 the bare formula gives eps_f < 0:
+  // 0 by default (immediate failure), else `minimum_failure_strain`.
+  EXPECT_EQ(johnson_cook_failure_strain(p, 2.0, 1.0, 300.0), 0.0);
+  JohnsonCookFailureParameters bounded = p;
+  bounded.minimum_failure_strain = 0.2;
+  EXPECT_DOUBLE_EQ(johnson_cook_failure_strain(bounded, 3.0, 1.0, 300.0), 0.2);
+  EXPECT_DOUBLE_EQ(johnson_cook_failure_strain(bounded, 0.0, 1.0, 300.0), 1.3);
 }
 
 TEST(JohnsonCookFailure, UniaxialStressFailsAtTheFormulaStrain) {
@@ -144,5 +151,6 @@ TEST(JohnsonCookFailure, BadInputNamesTheKey) {
   EXPECT_EQ(key_of("d1", -2.0), "damage.d1");
   EXPECT_EQ(key_of("melt_temperature", 250.0), "damage.melt_temperature");
   EXPECT_EQ(key_of("reference_strain_rate", 0.0), "damage.reference_strain_rate");
+  EXPECT_EQ(key_of("minimum_failure_strain", -0.1), "damage.minimum_failure_strain");
   EXPECT_EQ(key_of("d4", 0.01), "no error");
 }

@@ -32,6 +32,7 @@ struct TaylorResult {
   double kinetic_fraction = 0.0;  // kinetic energy at the end / initial
   double energy_error = 0.0;      // relative energy balance error at the end
   double max_plastic_strain = 0.0;
+  double max_damage = 0.0;  // Johnson-Cook failure of the preset (1 = failed)
   std::int64_t cycles = 0;
 };
 
@@ -86,13 +87,14 @@ inline TaylorResult run_taylor_bar(const TaylorSpec& spec) {
   r.energy_error = solver.energy().relative_error;
   for (double e : solver.batches()[0].plastic_strain)
     r.max_plastic_strain = std::max(r.max_plastic_strain, e);
+  for (double d : solver.batches()[0].damage) r.max_damage = std::max(r.max_damage, d);
   r.cycles = solver.cycle();
   std::printf(
       "Taylor %s, V = %.0f m/s, %d cells across: L = %.3f mm (L/L0 = %.4f), foot D = %.3f mm, "
-      "max eps_p = %.3f, KE left %.2e, energy error %.2e, %lld cycles\n",
+      "max eps_p = %.3f, max damage %.3f, KE left %.2e, energy error %.2e, %lld cycles\n",
       spec.preset.c_str(), spec.velocity, spec.radial_cells, r.final_length * 1e3,
-      r.final_length / spec.length, r.foot_diameter * 1e3, r.max_plastic_strain, r.kinetic_fraction,
-      r.energy_error, static_cast<long long>(r.cycles));
+      r.final_length / spec.length, r.foot_diameter * 1e3, r.max_plastic_strain, r.max_damage,
+      r.kinetic_fraction, r.energy_error, static_cast<long long>(r.cycles));
   return r;
 }
 

@@ -14,8 +14,8 @@
 using namespace camouflet;
 
 TEST(TaylorBar, Steel4340At208MetresPerSecondAgainstJohnsonCook1983Test) {
-  // 6 cells across the radius (0.64 mm); 10 cells change L by 0.03 % and the
-  // foot by 0.7 % (long_taylor_bar.cpp). The rod has stopped by 60 us.
+  // 6 cells across the radius (0.64 mm); 12 cells change L by 0.08 % and the
+  // foot by 0.06 % (long_taylor_bar.cpp). The rod has stopped by 60 us.
   const test::TaylorSpec spec{"steel_4340_jc1983", 3.81e-3, 25.4e-3, 208.0, 6, 80e-6, 60e-6};
   const test::TaylorResult r = test::run_taylor_bar(spec);
   test::verify(

@@ -19,7 +19,7 @@
 // rate_coefficient, thermal_exponent, room_temperature (K, default 300),
 // melt_temperature (K), specific_heat (J/kg K), taylor_quinney (default 0.9),
 // reference_strain_rate (1/s, default 1), isothermal (default false).
-// No Johnson-Cook failure (damage) model yet: a later issue.
+// Failure: the `johnson_cook` damage model (johnson_cook_failure.hpp).
 #include "materials/material.hpp"
 
 namespace camouflet {

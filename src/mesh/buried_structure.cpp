@@ -473,6 +473,13 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "exclude = [\"charge\"]\n"
         "fill = {{ shape = \"box\", min = [0.0, {:.9g}], max = [{:.9g}, 0.0], spacing = {:.9g} }}\n\n",
         -(s.burst_depth + s.sph_radius), s.sph_radius, L.zone_spacing);
+    // The three-phase soil reports its unloading (water-solid) sound speed,
+    // several times the speed of the compaction wave, so the linear term
+    // alpha c mu of the particle viscosity at the usual alpha = 1 damps the
+    // ground shock five- to tenfold within a metre (docs/buried-structure.md,
+    // "SPH viscosity"); alpha = 0.2 keeps it near the FEM bulk viscosity's.
+    b += "[sph]\nviscosity_alpha = 0.2  # linear term (see docs/buried-structure.md, \"SPH viscosity\")\n"
+         "viscosity_beta = 2.0   # quadratic term\n\n";
   }
   if (s.has_rebar) write_rebar(s, b);
   b += "# Boundaries: the axis r = 0; the far edges; the ground surface z = 0 is free.\n";

@@ -174,7 +174,7 @@ def main():
         for name, (Z, P) in peaks.items():
             lo, hi = tm5_functions(Z)
             for z, p, a, b in zip(Z, P, lo, hi):
-                inside = a / 1.5 <= p <= b * 1.5
+                inside = min(a, b) / 1.5 <= p <= max(a, b) * 1.5  # Function 1 lies above 2 below Z = 1
                 rows.append(f"<tr><td>{name[-1]}</td><td>{z:.3f}</td><td>{z * w3:.2f}</td><td>{p:.3g}</td>"
                             f"<td>{a:.3g} – {b:.3g}</td><td>{'yes' if inside else 'no'}</td></tr>")
         tables.append("<h2>Peak stresses against TM-5</h2><table><tr><th>group</th><th>Z [m/kg<sup>1/3</sup>]</th>"

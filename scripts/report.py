@@ -55,6 +55,18 @@ def generator_parameters(case_path):
     return params
 
 
+def rebar_gauges(case_path):
+    """[(name, segment)] from the generator's '# rebar gauges (bars.csv): In-1=front_in.1 ...' line."""
+    try:
+        with open(case_path) as f:
+            for line in f:
+                if line.startswith("# rebar gauges (bars.csv):"):
+                    return [tuple(item.split("=", 1)) for item in line.split(":", 1)[1].split() if "=" in item]
+    except OSError:
+        pass
+    return []
+
+
 def gauge_names(cols, prefix):
     names = []
     for c in cols:
@@ -162,7 +174,7 @@ def main():
         for name, (Z, P) in peaks.items():
             lo, hi = tm5_functions(Z)
             for z, p, a, b in zip(Z, P, lo, hi):
-                inside = a / 1.5 <= p <= b * 1.5
+                inside = min(a, b) / 1.5 <= p <= max(a, b) * 1.5  # Function 1 lies above 2 below Z = 1
                 rows.append(f"<tr><td>{name[-1]}</td><td>{z:.3f}</td><td>{z * w3:.2f}</td><td>{p:.3g}</td>"
                             f"<td>{a:.3g} – {b:.3g}</td><td>{'yes' if inside else 'no'}</td></tr>")
         tables.append("<h2>Peak stresses against TM-5</h2><table><tr><th>group</th><th>Z [m/kg<sup>1/3</sup>]</th>"
@@ -280,6 +292,30 @@ def main():
                 "<table><tr><th>where</th><th>peak velocity [m/s]</th><th>TM-5 V<sub>avg</sub> [m/s]</th>"
                 "<th>within criterion</th><th>peak acceleration [g]</th><th>TM-5 a<sub>avg</sub> [g]</th></tr>" +
                 "".join(rows) + "</table>")
+
+    # Fig. 13: rebar strain at the rebar gauges In-1..3 / Out-1..3 (bars.csv; the case header names the segments).
+    bpath = os.path.join(out, "bars.csv")
+    rebar = rebar_gauges(os.path.join(out, "case.toml"))
+    if os.path.exists(bpath) and rebar:
+        t, c = read_csv(bpath)
+        fig, ax = plt.subplots()
+        rows = []
+        for name, segment in rebar:
+            col = segment + ".axial_strain"
+            if col not in c:
+                continue
+            ax.plot(t * 1e3, c[col] * 1e6, "-" if name.startswith("In") else "--", label=f"{name} ({segment})")
+            rows.append(f"<tr><td>{name}</td><td>{segment}</td><td>{np.nanmax(np.abs(c[col])) * 1e6:.0f}</td>"
+                        f"<td>{np.nanmax(c[segment + '.plastic_strain']) * 1e6:.0f}</td></tr>")
+        ax.set_xlabel("time [ms]")
+        ax.set_ylabel("axial strain [µε, tension +]")
+        ax.set_title("Rebar strain in the front wall (cf. Fig. 13)")
+        ax.legend(fontsize=8)
+        figures.append((save(fig, figdir, "fig13_rebar_strain.png"),
+                        "Axial strain of the front wall's inner (In) and outer, soil-side (Out) bars at the top, "
+                        "mid-height and bottom (embedded bars, docs/buried-structure.md)."))
+        tables.append("<h2>Rebar gauges</h2><table><tr><th>gauge</th><th>bar segment</th><th>peak |strain| [µε]</th>"
+                      "<th>plastic strain [µε]</th></tr>" + "".join(rows) + "</table>")
 
     # Energy balance (summary.json holds the final state only).
     e = summary.get("energy_J", {})

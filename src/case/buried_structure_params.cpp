@@ -62,7 +62,12 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     s.where["rebar.cover"] = t->where("cover");
     s.rebar_ratio = t->number("ratio");
     s.where["rebar.ratio"] = t->where("ratio");
+    read(*t, "steel", s.steel, s);
     s.where["rebar"] = t->where();
+    t->finish();
+  }
+  if (auto t = root.table("sph")) {
+    read(*t, "radius", s.sph_radius, s);
     t->finish();
   }
   if (auto t = root.table("soil")) {

@@ -29,6 +29,7 @@ Model build(const toml::table& doc, const std::filesystem::path& file) {
   case_detail::read_bars(root, model);
   if (auto sph = root.table("sph")) case_detail::read_sph(*sph, model);
   case_detail::read_boundaries(root, model);
+  case_detail::read_contacts(root, model);
   case_detail::read_gauges(root, model);
   case_detail::read_detonations(root, model);
   root.finish();

@@ -142,8 +142,8 @@ static void check_particle_overlap(const Model& model) {
     SourceLocation w = part.where;
     w.key += ".fill";
     throw InputError(w,
-                     fmt::format("particles of SPH part '{}' overlap the finite elements at ({}); no join or "
-                                 "contact between particles and elements is defined",
+                     fmt::format("particles of SPH part '{}' overlap the finite elements at ({}); declare "
+                                 "`join = true` (or `cut_from`) to replace those elements by the zone",
                                  part.name, fmt::join(x.begin(), x.end(), ", ")));
   }
 }

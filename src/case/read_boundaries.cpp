@@ -27,6 +27,16 @@ bool on_faces(BoundaryKind k) {
 void check_set(TomlReader& b, const Model& model, const std::string& set, bool faces) {
   const auto& sets = faces ? model.mesh.face_sets : model.mesh.node_sets;
   if (sets.count(set)) return;
+  // "part.face" of an SPH part: particles have no element faces to carry a
+  // dashpot or a load, and no transmitting formulation exists for an SPH
+  // edge (docs/theory/coupling.md); say so rather than "no such set".
+  const std::string part = set.substr(0, set.find('.'));
+  for (const Part& p : model.parts)
+    if (p.kind == PartKind::sph && p.name == part)
+      b.fail("set", fmt::format("part '{}' is an SPH part: {} boundary acts on FEM faces or nodes only (an "
+                                "SPH edge has no transmitting formulation; join the zone to FEM parts "
+                                "and put the boundary on their faces)",
+                                part, faces ? "a face" : "a node"));
   std::vector<std::string> names;
   for (const auto& [name, members] : sets) names.push_back(name);
   const std::string guess = nearest(set, names);

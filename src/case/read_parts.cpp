@@ -2,9 +2,11 @@
 // generator or read from a Gmsh file (docs/case-format.md).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
 
 #include "case/sections.hpp"
+#include "coupling/joined_zone.hpp"
 #include "mesh/block_generator.hpp"
 #include "mesh/gmsh_import.hpp"
 #include "mesh/particle_fill.hpp"
@@ -70,7 +72,7 @@ void read_block(TomlReader& block, Model& model, const std::string& name, int pa
 }
 
 // `fill = { shape = ..., spacing = ... }` of an SPH part (issue 3; docs/case-format.md).
-void read_fill(TomlReader& fill, Model& model, int part_index) {
+ParticleFillSpec read_fill(TomlReader& fill, Model& model, int part_index) {
   const int dim = model.dimension();
   ParticleFillSpec spec;
   spec.part = part_index;
@@ -112,7 +114,99 @@ void read_fill(TomlReader& fill, Model& model, int part_index) {
                 fmt::format("max_spacing {} is below spacing {}", spec.max_spacing, spec.spacing));
   }
   fill.finish();
-  fill_particles(model.particles, spec, model.run.mode);
+  return spec;
+}
+
+// An SPH part's fill, read with the part and filled once every FEM part is
+// meshed: a joined zone cuts its hole from them (docs/case-format.md,
+// "Joined SPH zones").
+struct PendingFill {
+  ParticleFillSpec spec;
+  bool join = false;
+  std::vector<std::string> cut_from;  // FEM parts the hole is cut from; empty: every FEM part
+  SourceLocation cut_where;           // `cut_from`, else `join`
+  std::vector<std::string> exclude;   // SPH parts whose regions are left out
+  SourceLocation exclude_where;
+};
+
+std::vector<std::string> name_list(TomlReader& p, const std::string& key) {
+  const toml::array* list = p.array(key);
+  if (!list || list->empty()) p.fail(key, "expected a non-empty list of part names");
+  std::vector<std::string> out;
+  for (const auto& item : *list) {
+    const auto name = item.value<std::string>();
+    if (!name) p.fail(key, "expected a list of part names (strings)");
+    out.push_back(*name);
+  }
+  return out;
+}
+
+// `fill`, `join`, `cut_from` and `exclude` of an SPH part (part names are
+// resolved once all parts are read: they may name a part defined later).
+PendingFill read_sph_part(TomlReader& p, Model& model, int index) {
+  PendingFill pending;
+  auto fill = p.table("fill");
+  if (!fill) p.fail("fill", "an SPH part needs `fill = { shape = ..., spacing = ... }`");
+  if (p.has("block") || p.has("gmsh"))
+    p.fail(p.has("block") ? "block" : "gmsh", "an SPH part is filled, not meshed");
+  pending.spec = read_fill(*fill, model, index);
+  if (const toml::node* j = p.node("join")) {
+    if (!j->is_boolean()) p.fail("join", "expected true or false");
+    pending.join = j->as_boolean()->get();
+    pending.cut_where = p.where("join");
+  }
+  if (p.has("cut_from")) {
+    pending.cut_from = name_list(p, "cut_from");
+    pending.cut_where = p.where("cut_from");
+    pending.join = true;
+  }
+  if (p.has("exclude")) {
+    pending.exclude = name_list(p, "exclude");
+    pending.exclude_where = p.where("exclude");
+  }
+  return pending;
+}
+
+// The index of part `name`, which must be of `kind` and not `self`; InputError at `where` otherwise.
+int part_named(const Model& model, const std::string& name, PartKind kind, const SourceLocation& where,
+               int self) {
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < model.parts.size(); ++k) {
+    const Part& part = model.parts[k];
+    if (part.name == name) {
+      if (static_cast<int>(k) == self) throw InputError(where, fmt::format("part '{}' names itself", name));
+      if (part.kind != kind)
+        throw InputError(where, fmt::format("part '{}' is {} part, expected {} part here", name,
+                                            part.kind == PartKind::sph ? "an SPH" : "a FEM",
+                                            kind == PartKind::sph ? "an SPH" : "a FEM"));
+      return static_cast<int>(k);
+    }
+    if (part.kind == kind) names.push_back(part.name);
+  }
+  const std::string guess = nearest(name, names);
+  throw InputError(where, guess.empty()
+                              ? fmt::format("no part '{}' is defined", name)
+                              : fmt::format("no part '{}' is defined; did you mean '{}'?", name, guess));
+}
+
+// Fills the SPH parts in the order they are declared; a joined part first cuts
+// its hole from the FEM mesh and records the join (coupling/joined_zone.hpp).
+void fill_sph_parts(std::vector<PendingFill>& pending, Model& model) {
+  for (PendingFill& f : pending) {
+    for (const std::string& name : f.exclude) {
+      const int other = part_named(model, name, PartKind::sph, f.exclude_where, f.spec.part);
+      for (const PendingFill& g : pending)
+        if (g.spec.part == other) f.spec.exclude.push_back(g.spec.region);
+    }
+    if (!f.join) {
+      fill_particles(model.particles, f.spec, model.run.mode);
+      continue;
+    }
+    std::vector<int> cut;
+    for (const std::string& name : f.cut_from)
+      cut.push_back(part_named(model, name, PartKind::fem, f.cut_where, f.spec.part));
+    make_joined_zone(model, f.spec, cut, f.cut_where);
+  }
 }
 
 }  // namespace
@@ -122,6 +216,7 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
   model.mesh.dimension = dim;
   model.mesh.nodes_per_element = dim == 3 ? 8 : 4;
   std::set<std::string> seen;
+  std::vector<PendingFill> pending;  // SPH parts, filled once the FEM parts are meshed
   auto parts = root.tables("parts");
   if (parts.empty()) throw InputError(root.where("parts"), "the case has no [[parts]]: nothing to simulate");
   for (auto& p : parts) {
@@ -137,14 +232,13 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);
     if (part.kind == PartKind::sph) {
-      auto fill = p.table("fill");
-      if (!fill) p.fail("fill", "an SPH part needs `fill = { shape = ..., spacing = ... }`");
-      if (p.has("block") || p.has("gmsh"))
-        p.fail(p.has("block") ? "block" : "gmsh", "an SPH part is filled, not meshed");
-      read_fill(*fill, model, index);
+      pending.push_back(read_sph_part(p, model, index));
       p.finish();
       continue;
     }
+    for (const char* key : {"join", "cut_from", "exclude"})
+      if (p.has(key))
+        p.fail(key, "only an SPH part (kind = \"sph\") is joined to FEM parts or excludes regions");
 
     const bool has_block = p.has("block"), has_gmsh = p.has("gmsh");
     if (has_block == has_gmsh)
@@ -165,6 +259,7 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     }
     p.finish();
   }
+  fill_sph_parts(pending, model);
 }
 
 void check_name(const TomlReader& table, const std::string& key, const std::string& name) {

@@ -14,6 +14,8 @@ void read_output(TomlReader& output, Model& model);
 void read_materials(TomlReader& materials, Model& model);
 void read_parts(TomlReader& root, Model& model, const std::filesystem::path& case_dir);
 void read_boundaries(TomlReader& root, Model& model);
+// [[contacts]]: SPH part against FEM face set (case/read_contacts.cpp).
+void read_contacts(TomlReader& root, Model& model);
 // [sph]: numerical SPH settings (sph/sph_options.hpp), checked here.
 void read_sph(TomlReader& sph, Model& model);
 void read_gauges(TomlReader& root, Model& model);

@@ -47,7 +47,8 @@ double size_of(const FemMesh& mesh, std::size_t e) {
 
 }  // namespace
 
-void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
+void make_joined_zone(Model& model, const ParticleFillSpec& spec, const std::vector<int>& cut_parts,
+                      const SourceLocation& cut_where) {
   FemMesh& mesh = model.mesh;
   const int d = mesh.dimension;
   const std::size_t npe = static_cast<std::size_t>(mesh.nodes_per_element);
@@ -60,6 +61,9 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
   std::size_t cut = 0;
   for (std::size_t e = 0; e < ne; ++e) {
     if (model.parts[static_cast<std::size_t>(mesh.element_part[e])].kind != PartKind::fem) continue;
+    if (!cut_parts.empty() &&
+        std::find(cut_parts.begin(), cut_parts.end(), mesh.element_part[e]) == cut_parts.end())
+      continue;
     const auto c = centre_of(mesh, e);
     if (!spec.region.contains(c.data(), d)) continue;
     removed[e] = 1;
@@ -67,7 +71,7 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
     for (std::size_t a = 0; a < npe; ++a) hole_nodes.insert(mesh.connectivity[e * npe + a]);
   }
   if (cut == 0)
-    throw InputError(spec.where,
+    throw InputError(cut_parts.empty() ? spec.where : cut_where,
                      fmt::format("region: the SPH region of part '{}' cuts no element of a FEM part, so "
                                  "there is nothing to join it to (the parts are not adjacent)",
                                  part_name));
@@ -93,6 +97,16 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
                                  "part is left to join",
                                  part_name));
   join.fem_parts.assign(fem_parts.begin(), fem_parts.end());
+  // Every part named to be cut must meet the zone: cut, or beside the hole.
+  for (int p : cut_parts) {
+    bool meets = fem_parts.count(p) > 0;
+    for (std::size_t e = 0; e < ne && !meets; ++e) meets = removed[e] && mesh.element_part[e] == p;
+    if (!meets)
+      throw InputError(cut_where,
+                       fmt::format("part '{}' is not adjacent to the SPH zone of part '{}': none of its "
+                                   "elements lies in or beside the zone, so there is nothing to join",
+                                   model.parts.at(static_cast<std::size_t>(p)).name, part_name));
+  }
 
   // Fill the hole. A box region is snapped to the hole's bounding box, so the
   // particles tile exactly the cells that were cut (no gap, no overlap).
@@ -149,12 +163,15 @@ void make_joined_zone(Model& model, const ParticleFillSpec& spec) {
           }
         }
   }
-  if (worst > join_spacing_ratio_limit * (1.0 + 1e-6))
+  if (worst > join_spacing_ratio_limit * (1.0 + 1e-6)) {
+    SourceLocation at_spacing = spec.where;
+    if (!at_spacing.key.empty()) at_spacing.key += ".spacing";
     throw InputError(
-        spec.where,
+        at_spacing,
         fmt::format("spacing: particle spacing {:.4g} m against elements of {:.4g} m at the join of part "
                     "'{}' is a ratio of {:.3g}, beyond the limit {:g} (docs/theory/coupling.md)",
                     worst_particle, worst_element, part_name, worst, join_spacing_ratio_limit));
+  }
 
   // Remove the hole's elements, and the faces of sets that no remaining element carries.
   std::vector<std::int64_t> connectivity;

@@ -23,6 +23,10 @@ inline constexpr double join_spacing_ratio_limit = 2.0;
 
 // Throws InputError (at spec.where) when the region cuts no element (nothing
 // to join: key `region`) or the spacing ratio exceeds the limit (key `spacing`).
-void make_joined_zone(Model& model, const ParticleFillSpec& spec);
+// cut_parts: the FEM parts the hole is cut from (indices into model.parts;
+// empty: every FEM part). A listed part with no element in or beside the hole
+// is not adjacent to the zone: InputError at cut_where.
+void make_joined_zone(Model& model, const ParticleFillSpec& spec, const std::vector<int>& cut_parts = {},
+                      const SourceLocation& cut_where = {});
 
 }  // namespace camouflet

@@ -195,9 +195,15 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
       hi = p;
       if (p == cutoff) {
         // Beyond the cut-off: the mean stress stays at -(1 - D) p_t (gauge)
-        // and the stiffness reported is that of the branch at the cut-off.
+        // and the stiffness reported is that of the branch at the cut-off,
+        // taken at the cut-off's volume v_c = v + f (the point re-stiffens
+        // only once re-compressed to it): the sound speed K / rho is then the
+        // cut-off state's, -v_c^2 / (rho0 dv/dp). Scaling by the current v
+        // instead made an ejected point expanded 200-fold report c ~ 3e5 m/s
+        // and collapsed the time step (the coarse buried-structure case).
         s.converged = true;
-        s.bulk_modulus = -v / dv_dp;
+        const double v_cut = v + f;
+        s.bulk_modulus = -v_cut * v_cut / (v * dv_dp);
         s.branch = SoilBranch::tension_cutoff;
         return s;
       }

@@ -7,6 +7,8 @@
 #include <iterator>
 #include <numbers>
 
+#include "mesh/particle_fill.hpp"
+
 namespace camouflet {
 
 SourceLocation BuriedStructureSpec::location(const std::string& key) const {
@@ -102,8 +104,20 @@ struct Grid {
   std::vector<Interval> depth;  // along depth y = -z, from the ground down
 };
 
+bool has_sph_zone(const BuriedStructureSpec& s) {
+  return s.sph_radius > 0.0;
+}
+
+// Extent of the uniform near-field mesh around the charge centre (m): it
+// covers the SPH zone and two cells beyond, so the elements beside the hole
+// have the particles' size (join spacing ratio 1).
+double near_extent(const BuriedStructureSpec& s) {
+  return has_sph_zone(s) ? std::max(s.near_radius, s.sph_radius + 2.0 * s.size_near) : s.near_radius;
+}
+
 Fill fill_of(const BuriedStructureSpec& s, double half, double r, double y) {
-  if (r < half && std::abs(y - s.burst_depth) < half) return Fill::charge;
+  // With an SPH zone the charge is particles: the FEM grid is soil there (cut by the zone).
+  if (!has_sph_zone(s) && r < half && std::abs(y - s.burst_depth) < half) return Fill::charge;
   const double r0 = s.standoff, r1 = s.standoff + s.box_length;
   const double y0 = s.top_depth, y1 = s.top_depth + s.box_height, t = s.wall_thickness;
   if (r > r0 && r < r1 && y > y0 && y < y1) {
@@ -172,7 +186,22 @@ void check(const BuriedStructureSpec& s, double a) {
            fmt::format("{} m of cover leaves no room in a {} m wall", s.rebar_cover, s.wall_thickness));
     if (!(s.rebar_ratio > 0.0 && s.rebar_ratio < 0.1))
       fail("rebar.ratio", fmt::format("steel ratio must lie in (0, 0.1), got {}", s.rebar_ratio));
-    fail("rebar", "rebar layers need the rc branch's layer generator, which this build does not have yet");
+  }
+  if (!(s.sph_radius >= 0.0) || !std::isfinite(s.sph_radius))
+    fail("sph.radius", fmt::format("must be >= 0 (m; 0 = no SPH zone), got {}", s.sph_radius));
+  if (has_sph_zone(s)) {
+    if (s.sph_radius < a + 2.0 * s.size_near)
+      fail("sph.radius", fmt::format("the SPH zone of radius {} m must hold the charge (radius {:.3f} m) and "
+                                     "two particle spacings ({} m each) of soil around it",
+                                     s.sph_radius, a, s.size_near));
+    if (s.sph_radius + 2.0 * s.size_structure >= s.standoff)
+      fail("sph.radius",
+           fmt::format("the SPH zone (r <= {} m) crosses the structure at r = {} m: keep at least "
+                       "two structure cells ({} m) of FEM soil between them",
+                       s.sph_radius, s.standoff, 2.0 * s.size_structure));
+    if (s.burst_depth + s.sph_radius + 2.0 * s.size_near >= s.domain_depth)
+      fail("domain.depth", fmt::format("{} m does not contain the SPH zone (down to {} m)", s.domain_depth,
+                                       s.burst_depth + s.sph_radius));
   }
 }
 
@@ -181,12 +210,23 @@ Grid make_grid(const BuriedStructureSpec& s, double half) {
   const double r0 = s.standoff, r1 = s.standoff + s.box_length, t = s.wall_thickness;
   const double y0 = s.top_depth, y1 = s.top_depth + s.box_height;
   Grid g;
-  g.r = layout_axis(0.0, s.domain_radius, {half, r0, r0 + t, r1 - t, r1},
-                    {{0.0, s.near_radius, s.size_near}, {r0 - margin, r1 + margin, s.size_structure}},
-                    s.size_soil, s.size_far);
-  std::vector<double> y_lines{s.burst_depth - half, s.burst_depth + half, y0, y0 + t, y1 - t, y1};
+  const double near = near_extent(s);
+  // Block lines: the charge square (FEM charge) or the SPH zone's edges (the hole).
+  std::vector<double> r_lines{r0, r0 + t, r1 - t, r1};
+  std::vector<double> y_lines{y0, y0 + t, y1 - t, y1};
+  if (has_sph_zone(s)) {
+    r_lines.push_back(s.sph_radius);
+    y_lines.push_back(s.burst_depth + s.sph_radius);
+  } else {
+    r_lines.push_back(half);
+    y_lines.push_back(s.burst_depth - half);
+    y_lines.push_back(s.burst_depth + half);
+  }
+  g.r = layout_axis(0.0, s.domain_radius, r_lines,
+                    {{0.0, near, s.size_near}, {r0 - margin, r1 + margin, s.size_structure}}, s.size_soil,
+                    s.size_far);
   g.depth = layout_axis(0.0, s.domain_depth, y_lines,
-                        {{s.burst_depth - s.near_radius, s.burst_depth + s.near_radius, s.size_near},
+                        {{s.burst_depth - near, s.burst_depth + near, s.size_near},
                          {y0 - margin, y1 + margin, s.size_structure}},
                         s.size_soil, s.size_far);
   return g;
@@ -206,6 +246,85 @@ std::vector<double> gauge_ranges(const BuriedStructureSpec& s, double far) {
   const double q = std::pow(far / first, 1.0 / (s.gauge_count - 1));
   for (int k = 0; k < s.gauge_count; ++k) out.push_back(first * std::pow(q, k));
   return out;
+}
+
+// The SPH zone's particles, filled here as the case reader will fill them
+// (mesh/particle_fill.hpp) to count them and to choose the charge spacing: the
+// largest of mesh.near / k (k = 1 .. 8) whose cell-centred disc holds the
+// charge's volume within 3 % (the r-z lattice approximates the sphere by whole
+// cells), else the best of them. The modelled mass is printed in the case.
+void layout_sph_zone(const BuriedStructureSpec& s, BuriedStructureLayout& L) {
+  const double volume = s.charge_mass / s.explosive_density;
+  ParticleFillSpec charge;
+  charge.region.shape = ParticleRegion::Shape::sphere;
+  charge.region.centre = {0.0, -s.burst_depth, 0.0};
+  charge.region.radius = L.charge_radius;
+  double best_error = 1e300;
+  for (int k = 1; k <= 8; ++k) {
+    charge.spacing = s.size_near / k;
+    ParticleSet set;
+    fill_particles(set, charge, GeometryMode::axisymmetric);
+    double v = 0.0;
+    for (double dv : set.volume) v += dv;
+    const double error = std::abs(v / volume - 1.0);
+    if (error < best_error - 1e-12) {
+      best_error = error;
+      L.charge_spacing = charge.spacing;
+      L.charge_particles = set.count();
+      L.charge_model_mass = v * s.explosive_density;
+    }
+    if (error <= 0.03) break;
+  }
+  L.zone_spacing = s.size_near;
+  ParticleFillSpec zone;
+  zone.region.min = {0.0, -(s.burst_depth + s.sph_radius), 0.0};
+  zone.region.max = {s.sph_radius, 0.0, 0.0};
+  zone.spacing = s.size_near;
+  charge.spacing = L.charge_spacing;
+  zone.exclude.push_back(charge.region);
+  ParticleSet set;
+  fill_particles(set, zone, GeometryMode::axisymmetric);
+  L.zone_particles = set.count();
+}
+
+// Inner and outer mats of every wall as embedded bars ([[bars]]), bar lines at
+// the cover from each face, running between the mats of the adjoining walls;
+// the front wall's bars run downwards, so segment 1 is at the top. The rebar
+// gauges of the paper's Fig. 13 are front-wall segments: In-1..3 (inner mat)
+// and Out-1..3 (outer, soil side) at the top, mid-height and bottom.
+void write_rebar(const BuriedStructureSpec& s, std::string& b) {
+  auto out = std::back_inserter(b);
+  const double c = s.rebar_cover, t = s.wall_thickness;
+  const double r0 = s.standoff, r1 = s.standoff + s.box_length;
+  const double y0 = s.top_depth, y1 = s.top_depth + s.box_height;
+  const double area = s.rebar_ratio * t;
+  struct Line {
+    const char* name;
+    double ra, ya, rb, yb;
+  };
+  const double o = c, i = t - c;  // outer and inner bar lines from each outer face
+  const Line lines[] = {
+      {"front_out", r0 + o, y0 + o, r0 + o, y1 - o}, {"front_in", r0 + i, y0 + i, r0 + i, y1 - i},
+      {"back_out", r1 - o, y0 + o, r1 - o, y1 - o},  {"back_in", r1 - i, y0 + i, r1 - i, y1 - i},
+      {"roof_out", r0 + o, y0 + o, r1 - o, y0 + o},  {"roof_in", r0 + i, y0 + i, r1 - i, y0 + i},
+      {"floor_out", r0 + o, y1 - o, r1 - o, y1 - o}, {"floor_in", r0 + i, y1 - i, r1 - i, y1 - i},
+  };
+  int out_segments = 1, in_segments = 1;
+  b += "# Reinforcement mats as embedded bars (docs/buried-structure.md, \"Reinforcement\").\n";
+  for (const Line& l : lines) {
+    const int n =
+        std::max(2, static_cast<int>(std::lround(std::hypot(l.rb - l.ra, l.yb - l.ya) / s.size_structure)));
+    if (std::string(l.name) == "front_out") out_segments = n;
+    if (std::string(l.name) == "front_in") in_segments = n;
+    fmt::format_to(out,
+                   "[[bars]]\nname = \"{}\"\nfrom = [{:.9g}, {:.9g}]\nto = [{:.9g}, {:.9g}]\nsegments = {}\n"
+                   "area = {:.6g}  # m^2 per metre of circumference\nmaterial = \"steel\"\n\n",
+                   l.name, l.ra, -l.ya + 0.0, l.rb, -l.yb + 0.0, n, area);
+  }
+  fmt::format_to(out,
+                 "# rebar gauges (bars.csv): In-1=front_in.1 In-2=front_in.{} In-3=front_in.{} "
+                 "Out-1=front_out.1 Out-2=front_out.{} Out-3=front_out.{}\n\n",
+                 (in_segments + 1) / 2, in_segments, (out_segments + 1) / 2, out_segments);
 }
 
 }  // namespace
@@ -231,6 +350,7 @@ BuriedStructureLayout layout_buried_structure(const BuriedStructureSpec& spec) {
   const double via_side = std::hypot(2.0 * spec.domain_radius - spec.standoff, spec.burst_depth - y9);
   const double via_bottom = std::hypot(spec.standoff, 2.0 * spec.domain_depth - spec.burst_depth - y9);
   L.reflection_time = std::min(via_side, via_bottom) / spec.soil_wave_speed;
+  if (has_sph_zone(spec)) layout_sph_zone(spec, L);
   return L;
 }
 
@@ -245,26 +365,51 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
       "# Generated by `camouflet generate` (src/mesh/buried_structure.cpp, docs/buried-structure.md).\n"
       "# Do not edit the mesh by hand: change the parameter file and regenerate:\n#   {}\n#\n",
       regenerate);
-  fmt::format_to(
-      out,
-      "# {} kg of {} (sphere radius {:.3f} m, modelled as the equal-volume r-z square of half side\n"
-      "# {:.3f} m) centred {} m deep on the axis; RC box {} m x {} m, walls {} m, front face {} m from\n"
-      "# the axis, roof top {} m deep; domain {} m x {} m; {} blocks, {} elements.\n#\n",
-      s.charge_mass, s.explosive, L.charge_radius, L.charge_half_size, s.burst_depth, s.box_length,
-      s.box_height, s.wall_thickness, s.standoff, s.top_depth, s.domain_radius, s.domain_depth, L.block_count,
-      L.element_count);
+  if (has_sph_zone(s))
+    fmt::format_to(
+        out,
+        "# {} kg of {} (sphere radius {:.3f} m: an r-z disc of {} SPH particles of {:.4g} m, modelled\n"
+        "# mass {:.2f} kg) centred {} m deep on the axis, in an SPH soil zone r <= {} m, from the ground "
+        "down\n"
+        "# to {} m ({} particles of {:.4g} m) joined to the FEM soil; RC box {} m x {} m, walls {} m, front\n"
+        "# face {} m from the axis, roof top {} m deep; domain {} m x {} m; {} blocks, {} elements before\n"
+        "# the zone's hole is cut.\n#\n",
+        s.charge_mass, s.explosive, L.charge_radius, L.charge_particles, L.charge_spacing,
+        L.charge_model_mass, s.burst_depth, s.sph_radius, s.burst_depth + s.sph_radius, L.zone_particles,
+        L.zone_spacing, s.box_length, s.box_height, s.wall_thickness, s.standoff, s.top_depth,
+        s.domain_radius, s.domain_depth, L.block_count, L.element_count);
+  else
+    fmt::format_to(
+        out,
+        "# {} kg of {} (sphere radius {:.3f} m, modelled as the equal-volume r-z square of half side\n"
+        "# {:.3f} m) centred {} m deep on the axis; RC box {} m x {} m, walls {} m, front face {} m from\n"
+        "# the axis, roof top {} m deep; domain {} m x {} m; {} blocks, {} elements.\n#\n",
+        s.charge_mass, s.explosive, L.charge_radius, L.charge_half_size, s.burst_depth, s.box_length,
+        s.box_height, s.wall_thickness, s.standoff, s.top_depth, s.domain_radius, s.domain_depth,
+        L.block_count, L.element_count);
   // Machine-readable for scripts/report.py.
   fmt::format_to(
       out,
       "# generator: charge_mass_kg={} burst_depth_m={} standoff_m={} box_length_m={} box_height_m={} "
       "wall_thickness_m={} top_depth_m={}\n#\n",
       s.charge_mass, s.burst_depth, s.standoff, s.box_length, s.box_height, s.wall_thickness, s.top_depth);
-  b +=
-      "# KNOWN LIMITATION: the paper models the charge and the soil around it with SPH joined to the FEM "
-      "mesh.\n"
-      "# The case reader does not yet read SPH parts or joins, so here the charge (JWL elements, programmed\n"
-      "# burn) and the near field are Lagrangian FEM: crater ejecta are not followed, and the run stops if\n"
-      "# elements next to the charge invert. Rebar layers are not yet included (plain concrete box).\n";
+  if (!has_sph_zone(s))
+    b +=
+        "# No SPH zone (sph.radius = 0): the charge (JWL elements, programmed burn) and the near field are\n"
+        "# Lagrangian FEM: crater ejecta are not followed, and the run stops if elements next to the charge\n"
+        "# invert.\n";
+  else
+    b +=
+        "# Ejecta: no domain box is set, so particles thrown above the ground fly on (no gravity) and never\n"
+        "# stop the run; none is removed.\n";
+  if (s.has_rebar)
+    fmt::format_to(
+        out,
+        "# Reinforcement: inner and outer mats in every wall, roof and floor as embedded bars at {} m\n"
+        "# cover, steel area {:.4g} m^2 per metre of circumference per mat (ratio {} x wall {} m).\n",
+        s.rebar_cover, s.rebar_ratio * s.wall_thickness, s.rebar_ratio, s.wall_thickness);
+  else
+    b += "# No reinforcement (plain concrete box): give [rebar] cover and ratio in the parameter file.\n";
   if (s.transmitting)
     fmt::format_to(
         out,
@@ -286,6 +431,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
   fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,
                  s.explosive);
   fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
+  if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
 
   // One part per block of the tensor grid: adjacent blocks share nodes.
   std::string boundaries;
@@ -311,6 +457,31 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
       if (j + 1 == g.depth.size())
         fmt::format_to(bout, "[[boundary]]\ntype = \"{}\"\nset = \"{}.ymin\"\n\n", far_type, name);
     }
+  if (has_sph_zone(s)) {
+    // The charge first, then the zone, which leaves the charge's disc out and
+    // cuts its hole from the soil blocks (docs/case-format.md, "Joined SPH zones").
+    fmt::format_to(
+        out,
+        "# SPH (Wang et al. 2005, Fig. 6): the charge as explosive particles, detonated at its centre;\n"
+        "# the near-field soil as particles replacing the soil elements in the zone, joined to them.\n"
+        "[[parts]]\nname = \"charge\"\nkind = \"sph\"\nmaterial = \"charge\"\n"
+        "fill = {{ shape = \"sphere\", centre = [0.0, {:.9g}], radius = {:.9g}, spacing = {:.9g} }}\n\n",
+        -s.burst_depth, L.charge_radius, L.charge_spacing);
+    fmt::format_to(
+        out,
+        "[[parts]]\nname = \"near_field\"\nkind = \"sph\"\nmaterial = \"soil\"\njoin = true\n"
+        "exclude = [\"charge\"]\n"
+        "fill = {{ shape = \"box\", min = [0.0, {:.9g}], max = [{:.9g}, 0.0], spacing = {:.9g} }}\n\n",
+        -(s.burst_depth + s.sph_radius), s.sph_radius, L.zone_spacing);
+    // The three-phase soil reports its unloading (water-solid) sound speed,
+    // several times the speed of the compaction wave, so the linear term
+    // alpha c mu of the particle viscosity at the usual alpha = 1 damps the
+    // ground shock five- to tenfold within a metre (docs/buried-structure.md,
+    // "SPH viscosity"); alpha = 0.2 keeps it near the FEM bulk viscosity's.
+    b += "[sph]\nviscosity_alpha = 0.2  # linear term (see docs/buried-structure.md, \"SPH viscosity\")\n"
+         "viscosity_beta = 2.0   # quadratic term\n\n";
+  }
+  if (s.has_rebar) write_rebar(s, b);
   b += "# Boundaries: the axis r = 0; the far edges; the ground surface z = 0 is free.\n";
   b += boundaries;
 

@@ -44,10 +44,20 @@ struct BuriedStructureSpec {
   double size_structure = 0.05;
   double size_soil = 0.25;
   double size_far = 1.0;
-  // Rebar layers (cover m, steel ratio): only checked here; the layers need the rc branch's generator.
+  // SPH zone (Wang et al. 2005, Fig. 6): the soil in r <= sph_radius, from the
+  // ground down to burst_depth + sph_radius, is SPH particles of spacing
+  // mesh.near joined to the FEM soil around, and the charge is a sphere (an
+  // r-z disc) of SPH explosive particles. 0: no SPH zone (charge and near
+  // field as FEM elements).
+  double sph_radius = 0.0;  // m
+  // Reinforcement: an inner and an outer mat in every wall, roof and floor, as
+  // embedded bars (fem/embedded_bars.hpp) at `rebar_cover` (m, clear distance
+  // from the face to the bar line) with steel area per metre of circumference
+  // rebar_ratio x wall_thickness per mat.
   bool has_rebar = false;
   double rebar_cover = 0.0;
   double rebar_ratio = 0.0;
+  std::string steel = "steel_1006_wang2005";
   // Run control.
   double end_time = 0.07;         // s
   double field_interval = 0.005;  // s
@@ -70,6 +80,10 @@ struct BuriedStructureLayout {
   std::size_t element_count = 0;
   std::size_t block_count = 0;
   double reflection_time = 0.0;  // s, earliest arrival at the front wall of a wave reflected at a far edge
+  // SPH zone (sph_radius > 0): particle spacings (m) and counts, the modelled charge mass (kg).
+  double zone_spacing = 0.0, charge_spacing = 0.0;
+  std::size_t zone_particles = 0, charge_particles = 0;
+  double charge_model_mass = 0.0;
 };
 
 // Checks the spec (InputError naming the key) and lays out the grid.

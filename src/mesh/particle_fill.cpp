@@ -150,6 +150,8 @@ void fill_particles(ParticleSet& particles, const ParticleFillSpec& spec, Geomet
   auto emit = [&](const std::array<double, 3>& c, const std::array<double, 3>& step) {
     if (!region.contains(c.data(), dim)) return;
     if (axisymmetric && c[0] <= 0.0) return;
+    for (const ParticleRegion& hole : spec.exclude)
+      if (hole.contains(c.data(), dim)) return;
     double cell = 1.0;
     for (int d = 0; d < dim; ++d) cell *= step[d];
     for (int d = 0; d < dim; ++d) particles.coordinates.push_back(c[d]);

@@ -50,7 +50,10 @@ struct ParticleFillSpec {
   std::array<double, 3> grading_point{};  // m, where the spacing is smallest
   double grading_ratio = 1.0;             // > 1: growth of the spacing from shell to shell
   double max_spacing = 0.0;               // m, upper bound of the graded spacing
-  SourceLocation where;                   // the part's block, for messages
+  // Regions left out (another SPH part nested inside this one, e.g. the
+  // charge in the soil zone): a cell whose centre lies in one is not filled.
+  std::vector<ParticleRegion> exclude;
+  SourceLocation where;  // the part's block, for messages
 };
 
 // Appends the particles of one region to `particles`. Throws InputError

@@ -114,5 +114,55 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
     EXPECT_TRUE(fs::exists(out / "report" / f)) << f;
 }
 
+// The same reduced case with the paper's zoning (Fig. 6): the charge and the
+// soil within 0.3 m of the axis (down to 0.5 m) as SPH particles joined to the
+// FEM soil, reinforcement mats as embedded bars. References produced by this
+// code (the commit adding this test); tolerance 3 % as above.
+TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
+  const fs::path out = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "buried_regression_sph";
+  fs::remove_all(out);
+  BuriedStructureSpec spec = reduced_case();
+  spec.sph_radius = 0.3;
+  spec.has_rebar = true;
+  spec.rebar_cover = 0.015;
+  spec.rebar_ratio = 0.005;
+  const Model model = read_case_text(buried_structure_case(spec, "test"), "reduced_sph.toml");
+  ASSERT_EQ(model.joins.size(), 1u);
+  RunOptions options;
+  options.output_dir = out;
+  options.progress = ProgressStyle::none;
+  options.threads = 1;
+  const RunSummary summary = run_model(model, options);
+  ASSERT_FALSE(summary.failed) << summary.stop_reason;
+  // Known weak: with the SPH zone the balance closes to 4.1 % here (the join
+  // resolves the shock passing it only to first order in the spacing, see
+  // tests/case/test_joined_case.cpp), against 0.2 % for the all-FEM case.
+  std::cout << "regression (SPH zone) energy error " << summary.energy.relative_error << "\n";
+  EXPECT_LT(summary.energy.relative_error, 0.05);
+
+  const auto a = column_peaks(out / "group_A.csv");
+  const auto b = column_peaks(out / "group_B.csv");
+  const auto s = column_peaks(out / "structure.csv");
+  const auto bars = column_peaks(out / "bars.csv");
+  struct Reference {
+    const char* what;
+    double value;
+    const char* unit;
+  };
+  const std::pair<Reference, double> checks[] = {
+      {{"group_B B1 pressure", 2.19657e8, "Pa"}, b.at("B1.pressure")},
+      {{"group_B B2 pressure", 9.09688e6, "Pa"}, b.at("B2.pressure")},
+      {{"group_A A1 pressure", 3.39361e8, "Pa"}, a.at("A1.pressure")},
+      {{"structure t9 stress_xx", 7.24655e7, "Pa"}, s.at("t9.stress_xx")},
+      {{"structure t2 velocity_x", 16.8451, "m/s"}, s.at("t2.velocity_x")},
+      {{"rebar front_out.1 axial_strain", 2.24258e-3, "-"}, bars.at("front_out.1.axial_strain")},
+  };
+  for (const auto& [ref, computed] : checks) {
+    std::cout << "regression (SPH zone) " << ref.what << " = " << computed << " " << ref.unit << "\n";
+    test::verify({std::string("Reduced buried-structure case with SPH zone: peak ") + ref.what,
+                  "stored reference (this code)", ref.value, computed, 0.03, true, ref.unit});
+  }
+}
+
 }  // namespace
 }  // namespace camouflet

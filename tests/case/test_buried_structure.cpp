@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 
 #include "case/buried_structure_params.hpp"
 #include "case/case_reader.hpp"
 #include "common/verification.hpp"
 #include "mesh/buried_structure.hpp"
+#include "run_executable.hpp"
 
 namespace camouflet {
 namespace {
@@ -130,6 +133,87 @@ TEST(BuriedStructure, BadInputNamesTheKey) {
   s = paper_coarse();
   s.domain_radius = 9.0;
   expect_refused(s, "domain.radius");
+}
+
+// The paper's zoning (Fig. 6): an SPH zone around the charge, joined to the
+// FEM soil, the charge as SPH explosive particles, reinforcement as bars.
+TEST(BuriedStructure, SphZoneAndRebarCase) {
+  auto spec = paper_coarse();
+  spec.sph_radius = 1.5;
+  spec.has_rebar = true;
+  spec.rebar_cover = 0.025;
+  spec.rebar_ratio = 0.005;
+  const BuriedStructureLayout L = layout_buried_structure(spec);
+  const Model model = read_case_text(buried_structure_case(spec, "test"), "generated.toml");
+  ASSERT_EQ(model.joins.size(), 1u);
+  int charge = -1, zone = -1;
+  for (std::size_t k = 0; k < model.parts.size(); ++k) {
+    if (model.parts[k].name == "charge") charge = static_cast<int>(k);
+    if (model.parts[k].name == "near_field") zone = static_cast<int>(k);
+  }
+  ASSERT_GE(charge, 0);
+  ASSERT_GE(zone, 0);
+  EXPECT_EQ(model.joins[0].sph_part, zone);
+  double charge_volume = 0.0, zone_volume = 0.0;
+  std::size_t charge_count = 0, zone_count = 0;
+  for (std::size_t i = 0; i < model.particles.count(); ++i) {
+    if (model.particles.particle_part[i] == charge)
+      charge_volume += model.particles.volume[i], ++charge_count;
+    if (model.particles.particle_part[i] == zone) zone_volume += model.particles.volume[i], ++zone_count;
+  }
+  EXPECT_EQ(charge_count, L.charge_particles);
+  EXPECT_EQ(zone_count, L.zone_particles);
+  // The charge's cell-centred disc holds the charge mass within the generator's 3 %.
+  test::verify({"Buried-structure generator: SPH charge mass", "100 kg TNT (paper section 5)", 100.0,
+                charge_volume * 1630.0, 0.03, true, "kg"});
+  // Charge + zone fill the zone's volume of revolution (pi R^2 (d + R)) to within the cells along the
+  // charge's boundary, where the two lattices meet.
+  const double zone_box = std::numbers::pi * 1.5 * 1.5 * 2.0;
+  test::verify({"Buried-structure generator: SPH zone + charge particle volume", "pi R^2 (d + R)", zone_box,
+                charge_volume + zone_volume, 0.01, true, "m^3"});
+  // The hole: no soil element left with its centre in the zone, and no concrete cut.
+  for (std::size_t e = 0; e < model.mesh.element_count(); ++e) {
+    double r = 0.0, z = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const auto n = static_cast<std::size_t>(model.mesh.connectivity[4 * e + static_cast<std::size_t>(k)]);
+      r += 0.25 * model.mesh.coordinates[2 * n];
+      z += 0.25 * model.mesh.coordinates[2 * n + 1];
+    }
+    EXPECT_FALSE(r < 1.5 && z > -2.0) << "element " << e << " at (" << r << ", " << z << ") in the SPH zone";
+  }
+  EXPECT_NEAR(volume_of(model, "concrete"),
+              volume_of(read_case_text(buried_structure_case(paper_coarse(), "t"), "plain.toml"), "concrete"),
+              1e-9);
+  // Reinforcement: an inner and an outer mat in the front and back walls, the roof and the floor.
+  EXPECT_EQ(model.bars.size(), 8u);
+  EXPECT_NE(buried_structure_case(spec, "test").find("# rebar gauges (bars.csv): In-1=front_in.1"),
+            std::string::npos);
+}
+
+TEST(BuriedStructure, SphZoneBadInputNamesTheKey) {
+  auto s = paper_coarse();
+  s.sph_radius = 5.95;  // reaches the front wall at r = 6 m
+  expect_refused(s, "sph.radius");
+  s.sph_radius = 0.3;  // the charge (radius 0.245 m) with less than two particle spacings of soil
+  expect_refused(s, "sph.radius");
+  s.sph_radius = -1.0;
+  expect_refused(s, "sph.radius");
+}
+
+// Through `camouflet generate`: status 2 and one line naming file, line and key.
+TEST(BuriedStructure, GenerateRefusesAnSphZoneCrossingTheStructure) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "generate-bad";
+  fs::create_directories(dir);
+  const fs::path params = dir / "crossing.params.toml";
+  std::ofstream(params) << "[charge]\nmass = 100.0\n[structure]\nstandoff = 6.0\n[sph]\nradius = 5.95\n";
+  const auto r =
+      test::run_camouflet("generate '" + params.string() + "' -o '" + (dir / "out.toml").string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("crossing.params.toml:6"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("key 'sph.radius'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("crosses the structure"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out.toml"));
 }
 
 TEST(BuriedStructure, ParameterFileKeysAndLines) {

@@ -1,5 +1,7 @@
 #include "materials/sandy_clay_preset.hpp"
 
+#include <stdexcept>
+
 namespace camouflet {
 
 MaterialPreset sandy_clay_wang2005() {
@@ -45,6 +47,46 @@ MaterialPreset sandy_clay_wang2005() {
   return m;
 }
 
+double friction_modulus_for_seismic_velocity(const Parameters& eos, double shear_modulus,
+                                             double seismic_velocity) {
+  Parameters e = eos;  // read through a copy: the preset's keys stay unconsumed
+  const double as = e.number("solid_fraction"), aw = e.number("water_fraction"),
+               ag = e.number("air_fraction");
+  const double rho_s = e.number("solid_density"), c_s = e.number("solid_sound_speed");
+  const double rho_w = e.number("water_density"), c_w = e.number("water_sound_speed");
+  const double rho_g = e.number("air_density"), c_g = e.number("air_sound_speed");
+  const double rho0 = as * rho_s + aw * rho_w + ag * rho_g;
+  const double k_s = rho_s * c_s * c_s, k_w = rho_w * c_w * c_w;
+  const double k_air = rho_g * c_g * c_g;  // k_g p0 (eq. 15)
+  // Theory section 5: K0 = [a_s/K_s + 1/(K_f + f K_p + E0/a_p)]^-1, and the
+  // P-wave modulus K0 + 4G/3 = rho0 c^2.
+  const double k0 = rho0 * seismic_velocity * seismic_velocity - 4.0 / 3.0 * shear_modulus;
+  const double k_pore = 1.0 / (1.0 / k0 - as / k_s);
+  const double k_fluid = 1.0 / (aw / k_w + ag / k_air);
+  const double friction_part = k_pore - k_fluid - e.number("bond_modulus") / (aw + ag);
+  if (!(k0 > 0.0 && k_pore > 0.0 && friction_part > 0.0))
+    throw std::invalid_argument("seismic velocity below what the phases and bonds alone give");
+  return friction_part / e.number("friction_coefficient");
+}
+
+// Wang et al. 2005 Table 2 with K_p raised so that the small-strain P-wave
+// speed is Table 1's seismic velocity, 1400 m/s (K_p = 6.76 GPa instead of
+// 165 MPa): the calibration a user needs for the TM 5-855-1 peak stresses,
+// which scale with rho c (theory section 12).
+MaterialPreset sandy_clay_wang2005_seismic() {
+  MaterialPreset m = sandy_clay_wang2005();
+  m.description =
+      "Sandy clay, three-phase soil model (Wang et al. 2005, Tables 1-2) with the skeleton friction "
+      "modulus K_p calibrated to Table 1's seismic velocity 1400 m/s (theory manual section 12)";
+  const SourceLocation here{"preset sandy_clay_wang2005_seismic", 0, 0, ""};
+  Parameters strength = m.strength;  // a copy, as above
+  m.eos.set_number("friction_modulus",
+                   friction_modulus_for_seismic_velocity(m.eos, strength.number("shear_modulus"), 1400.0),
+                   here);
+  return m;
+}
+
 CAMOUFLET_REGISTER_PRESET("sandy_clay_wang2005", sandy_clay_wang2005);
+CAMOUFLET_REGISTER_PRESET("sandy_clay_wang2005_seismic", sandy_clay_wang2005_seismic);
 
 }  // namespace camouflet

@@ -9,6 +9,9 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr int max_iterations = 200;
+// Absolute pressure (Pa) below which pore water cavitates on unloading: its
+// vapour pressure (2.3 kPa at 20 C), taken as zero.
+constexpr double cavitation_pressure = 0.0;
 
 // Root of a strictly decreasing F(x) by Newton's method kept inside a bracket
 // [lo, hi] (either end may be open, +-inf), falling back to bisection, or to a
@@ -158,16 +161,25 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
   const double vw_max = c.water.volume(from.pore_pressure, p0);
   const double vs_max = c.solid.volume(from.pressure, p0);
   SoilState s;
-  double dv_dp = 0.0;
+  double dv_dp = 0.0, dv_dp_reported = 0.0;
   // The compacted air voids and the skeleton stay as they were at maximum
   // compaction; water (at p_b = p_b,max + p - p_max) and grains (at p) expand
-  // elastically along eqs. 13-14: the water-solid mixture stiffness.
+  // elastically along eqs. 13-14: the water-solid mixture stiffness. The pore
+  // water cavitates instead of going below zero absolute pressure (its vapour
+  // pressure, ~2 kPa, taken as 0): below that only the grains expand.
   auto eval = [&](double p, double& f) {
-    const double pb = from.pore_pressure + (p - from.pressure);
+    const double pb_elastic = from.pore_pressure + (p - from.pressure);
+    const bool cavitated = pb_elastic < cavitation_pressure;
+    const double pb = cavitated ? cavitation_pressure : pb_elastic;
     const double vw = c.water.volume(pb, p0);
     const double vs = c.solid.volume(p, p0);
-    dv_dp = (vw > 0.0 ? -vw / c.water.tangent_modulus(pb, p0) : 0.0) +
-            (vs > 0.0 ? -vs / c.solid.tangent_modulus(p, p0) : 0.0);
+    const double dvw_dp = vw > 0.0 ? -vw / c.water.tangent_modulus(pb, p0) : 0.0;
+    const double dvs_dp = vs > 0.0 ? -vs / c.solid.tangent_modulus(p, p0) : 0.0;
+    dv_dp = (cavitated ? 0.0 : dvw_dp) + dvs_dp;
+    // The sound speed reported stays that of water and grains together: the
+    // grains-only stretch while the water is cavitated is short (it ends when
+    // the pore water is back above zero), and would otherwise cut the time step.
+    dv_dp_reported = dvw_dp + dvs_dp;
     f = from.volume + (vw - vw_max) + (vs - vs_max) - v;
     s.pressure = p;
     s.pore_pressure = pb;
@@ -203,7 +215,7 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
         // and collapsed the time step (the coarse buried-structure case).
         s.converged = true;
         const double v_cut = v + f;
-        s.bulk_modulus = -v_cut * v_cut / (v * dv_dp);
+        s.bulk_modulus = -v_cut * v_cut / (v * dv_dp_reported);
         s.branch = SoilBranch::tension_cutoff;
         return s;
       }
@@ -221,7 +233,7 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
     }
     p = next;
   }
-  s.bulk_modulus = -v / dv_dp;
+  s.bulk_modulus = -v / dv_dp_reported;
   s.branch = SoilBranch::unloading;
   return s;
 }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -163,9 +164,10 @@ TEST(ThreePhaseSoilEos, UnloadingFrom100MPaFollowsTheWaterSolidRule) {
   verify({"Three-phase soil: loading to 100 MPa", "explicit loading curve", 100e6, pts.pressure[0], 1e-8,
           true, "Pa"});
 
-  // The rule: v(p) = v_min + [v_w(p_b,max + p - p_max) - v_w(p_b,max)] + [v_s(p) - v_s(p_max)].
+  // The rule: v(p) = v_min + [v_w(p_b) - v_w(p_b,max)] + [v_s(p) - v_s(p_max)],
+  // p_b = max(p_b,max + p - p_max, 0): the pore water cavitates at zero absolute pressure.
   auto v_rule = [&](double p) {
-    return v_min + (h.vw(pb_max + p - p_max) - h.vw(pb_max)) + (h.vs(p) - h.vs(p_max));
+    return v_min + (h.vw(std::max(pb_max + p - p_max, 0.0)) - h.vw(pb_max)) + (h.vs(p) - h.vs(p_max));
   };
   double worst = 0.0;
   for (double p_gauge : {80e6, 50e6, 20e6, 5e6, 1e6}) {
@@ -233,6 +235,25 @@ TEST(ThreePhaseSoilEos, SoundSpeedIsTheBranchTangent) {
   probe(rho_max * 0.999 + d, p2, c2);
   verify({"Three-phase soil: unloading sound speed", "c^2 = dp/drho (finite difference)", (p2 - p1) / d,
           c1 * c1, 1e-4, true, "m^2/s^2"});
+}
+
+// Preset `sandy_clay_wang2005_seismic` (theory section 12): K_p solved from the
+// section 5 derivation so that the small-strain P-wave speed
+// sqrt((K0 + 4G/3)/rho0) is Table 1's seismic velocity.
+TEST(ThreePhaseSoilEos, SeismicPresetHasTheTable1SeismicVelocity) {
+  const MaterialPreset p = sandy_clay_wang2005_seismic();
+  const auto material = soil_material(p.eos, p.strength, p.damage);
+  PointDriver point(material);
+  // At v = 1 the point reports the (stiffer) unloading branch; the seismic
+  // velocity is the loading tangent, taken just inside compression.
+  MaterialPoints& pts = point.pts;
+  pts.density[0] *= 1.0 + 1e-9;
+  material->eos().evaluate(pts, MaterialContext{}, false);
+  verify({"Sandy clay, seismic calibration: small-strain P-wave speed of the EOS + shear modulus",
+          "Table 1 seismic velocity", 1400.0, pts.wave_speed(0), 1e-6, true, "m/s"});
+  Parameters eos = p.eos;
+  verify({"Sandy clay, seismic calibration: friction modulus K_p", "hand value (theory section 12)", 6.760e9,
+          eos.number("friction_modulus"), 1e-3, true, "Pa"});
 }
 
 }  // namespace

@@ -17,6 +17,8 @@ void read_gauges(TomlReader& root, Model& model) {
     check_name(g, "name", group.name);
     if (!groups.insert(group.name).second)
       g.fail("name", fmt::format("gauge group '{}' is defined twice", group.name));
+    // Gauges among particles: follow the nearest particle, or interpolate at the fixed point.
+    const bool interpolate = g.choice("particles", {"follow", "interpolate"}, "follow") == "interpolate";
     const bool has_points = g.has("points"), has_line = g.has("from") || g.has("to") || g.has("count");
     g.allow({"from", "to", "count"});
     if (has_points == has_line)
@@ -34,6 +36,7 @@ void read_gauges(TomlReader& root, Model& model) {
           p.fail("name", fmt::format("gauge '{}' appears twice", gauge.name));
         gauge.position = p.vector("position", dim);
         gauge.where = p.where("position");
+        gauge.interpolate = interpolate;
         p.finish();
         group.points.push_back(std::move(gauge));
       }
@@ -46,6 +49,7 @@ void read_gauges(TomlReader& root, Model& model) {
         gauge.name = fmt::format("p{}", k + 1);
         const double w = count > 1 ? static_cast<double>(k) / static_cast<double>(count - 1) : 0.0;
         for (std::size_t i = 0; i < 3; ++i) gauge.position[i] = (1.0 - w) * from[i] + w * to[i];
+        gauge.interpolate = interpolate;
         gauge.where = g.where("from");
         gauge.where.key = g.key_path(fmt::format("from/to (gauge {})", gauge.name));
         group.points.push_back(std::move(gauge));

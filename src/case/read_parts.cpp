@@ -72,12 +72,13 @@ void read_block(TomlReader& block, Model& model, const std::string& name, int pa
 }
 
 // `fill = { shape = ..., spacing = ... }` of an SPH part (issue 3; docs/case-format.md).
-ParticleFillSpec read_fill(TomlReader& fill, Model& model, int part_index) {
+ParticleFillSpec read_fill(TomlReader& fill, Model& model, int part_index,
+                           const std::filesystem::path& case_dir) {
   const int dim = model.dimension();
   ParticleFillSpec spec;
   spec.part = part_index;
   spec.where = fill.where();
-  const std::string shape = fill.choice("shape", {"box", "sphere", "cylinder", "polygon"}, "box");
+  const std::string shape = fill.choice("shape", {"box", "sphere", "cylinder", "polygon", "gmsh"}, "box");
   auto& region = spec.region;
   if (shape == "box") {
     region.shape = ParticleRegion::Shape::box;
@@ -94,6 +95,13 @@ ParticleFillSpec read_fill(TomlReader& fill, Model& model, int part_index) {
       region.length = fill.positive("length");
       if (dim == 3) region.axis = fill.vector("axis", dim, {0, 0, 1});
     }
+  } else if (shape == "gmsh") {
+    // A physical surface (2-D) or volume (3-D) of a Gmsh file, cut into simplices.
+    region.shape = ParticleRegion::Shape::mesh;
+    const std::filesystem::path file = fill.string("file");
+    region.mesh = std::make_shared<const SimplexRegion>(
+        import_gmsh_region(dim, file.is_absolute() ? file : case_dir / file, fill.string("physical"),
+                           fill.where("file"), fill.where("physical")));
   } else {
     if (dim != 2) fill.fail("shape", "a polygon fills a 2-D region only");
     region.shape = ParticleRegion::Shape::polygon;
@@ -143,13 +151,13 @@ std::vector<std::string> name_list(TomlReader& p, const std::string& key) {
 
 // `fill`, `join`, `cut_from` and `exclude` of an SPH part (part names are
 // resolved once all parts are read: they may name a part defined later).
-PendingFill read_sph_part(TomlReader& p, Model& model, int index) {
+PendingFill read_sph_part(TomlReader& p, Model& model, int index, const std::filesystem::path& case_dir) {
   PendingFill pending;
   auto fill = p.table("fill");
   if (!fill) p.fail("fill", "an SPH part needs `fill = { shape = ..., spacing = ... }`");
   if (p.has("block") || p.has("gmsh"))
     p.fail(p.has("block") ? "block" : "gmsh", "an SPH part is filled, not meshed");
-  pending.spec = read_fill(*fill, model, index);
+  pending.spec = read_fill(*fill, model, index, case_dir);
   if (const toml::node* j = p.node("join")) {
     if (!j->is_boolean()) p.fail("join", "expected true or false");
     pending.join = j->as_boolean()->get();
@@ -232,7 +240,7 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);
     if (part.kind == PartKind::sph) {
-      pending.push_back(read_sph_part(p, model, index));
+      pending.push_back(read_sph_part(p, model, index, case_dir));
       p.finish();
       continue;
     }

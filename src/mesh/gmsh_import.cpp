@@ -22,6 +22,35 @@ constexpr int gmsh_point = 15;
 constexpr int gmsh_line2 = 1;
 constexpr int gmsh_quad4 = 3;
 constexpr int gmsh_hex8 = 5;
+constexpr int gmsh_triangle3 = 2;
+constexpr int gmsh_tet4 = 4;
+constexpr int gmsh_prism6 = 6;
+constexpr int gmsh_pyramid5 = 7;
+
+// Element corners (Gmsh node order) of each simplex of a linear element:
+// quad along diagonal 0-2, hex into six tetrahedra around diagonal 0-6.
+const std::vector<std::vector<int>>& simplices_of(int type) {
+  static const std::vector<std::vector<int>> triangle{{0, 1, 2}}, quad{{0, 1, 2}, {0, 2, 3}},
+      tet{{0, 1, 2, 3}},
+      hex{{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}},
+      prism{{0, 1, 2, 5}, {0, 1, 5, 4}, {0, 4, 5, 3}}, pyramid{{0, 1, 2, 4}, {0, 2, 3, 4}}, none;
+  switch (type) {
+    case gmsh_triangle3:
+      return triangle;
+    case gmsh_quad4:
+      return quad;
+    case gmsh_tet4:
+      return tet;
+    case gmsh_hex8:
+      return hex;
+    case gmsh_prism6:
+      return prism;
+    case gmsh_pyramid5:
+      return pyramid;
+    default:
+      return none;
+  }
+}
 
 // The Gmsh library is a process-wide singleton: initialise it once, quietly,
 // and serialise every use.
@@ -286,7 +315,97 @@ class Importer {
   std::unordered_map<std::int64_t, std::vector<std::int64_t>> node_elements_;
 };
 
+// The region of one physical group as simplices (import_gmsh_region).
+std::vector<std::array<double, 3>> region_simplices(int dim, const std::filesystem::path& file,
+                                                    const std::string& physical,
+                                                    const SourceLocation& file_where,
+                                                    const SourceLocation& physical_where) {
+  const auto groups = physical_groups();
+  const PhysicalGroup* group = nullptr;
+  std::vector<std::string> names;
+  for (const auto& g : groups) {
+    names.push_back(g.name);
+    if (g.name == physical && g.dim == dim) group = &g;
+  }
+  if (!group) {
+    const std::string guess = nearest(physical, names);
+    throw InputError(physical_where,
+                     fmt::format("no {}-D physical group '{}' in {}{}", dim, physical, file.string(),
+                                 guess.empty() ? fmt::format(" (it has: {})", fmt::join(names, ", "))
+                                               : fmt::format("; did you mean '{}'?", guess)));
+  }
+  std::vector<std::size_t> tags;
+  std::vector<double> coord, parametric;
+  gmsh::model::mesh::getNodes(tags, coord, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::array<double, 3>> nodes;
+  for (std::size_t k = 0; k < tags.size(); ++k)
+    nodes[tags[k]] = {coord[3 * k], coord[3 * k + 1], coord[3 * k + 2]};
+  std::vector<std::array<double, 3>> corners;
+  for (const auto& [type, element_nodes] : group_elements(*group)) {
+    const auto& cut = simplices_of(type);
+    std::string type_name;
+    int edim = 0, order = 0, nn = 0, nprimary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(type, type_name, edim, order, nn, local, nprimary);
+    if (cut.empty())
+      throw InputError(
+          physical_where,
+          fmt::format(
+              "physical group '{}' in {} has {} elements; a particle region takes linear "
+              "{} only",
+              physical, file.string(), type_name,
+              dim == 2 ? "triangles and quadrilaterals" : "tetrahedra, hexahedra, prisms and pyramids"));
+    for (std::size_t e = 0; e + static_cast<std::size_t>(nn) <= element_nodes.size();
+         e += static_cast<std::size_t>(nn))
+      for (const auto& simplex : cut)
+        for (const int a : simplex) {
+          const auto it = nodes.find(element_nodes[e + static_cast<std::size_t>(a)]);
+          if (it == nodes.end())
+            throw InputError(file_where, fmt::format("{}: element refers to undefined node {}", file.string(),
+                                                     element_nodes[e + static_cast<std::size_t>(a)]));
+          if (dim == 2 && it->second[2] != 0.0)
+            throw InputError(file_where,
+                             fmt::format("{}: node {} has z = {}; a 2-D region must lie in the plane z = 0",
+                                         file.string(), it->first, it->second[2]));
+          corners.push_back(it->second);
+        }
+  }
+  if (corners.empty())
+    throw InputError(physical_where,
+                     fmt::format("physical group '{}' in {} has no elements", physical, file.string()));
+  return corners;
+}
+
 }  // namespace
+
+SimplexRegion import_gmsh_region(int dimension, const std::filesystem::path& file,
+                                 const std::string& physical, const SourceLocation& file_where,
+                                 const SourceLocation& physical_where) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec))
+    throw InputError(file_where, fmt::format("mesh file '{}' not found", file.string()));
+  std::lock_guard<std::mutex> lock(gmsh_mutex());
+  std::vector<std::array<double, 3>> corners;
+  try {
+    ensure_gmsh();
+    gmsh::clear();
+    gmsh::open(file.string());
+    corners = region_simplices(dimension, file, physical, file_where, physical_where);
+  } catch (const InputError&) {
+    gmsh::clear();
+    throw;
+  } catch (...) {
+    const std::string why = last_gmsh_error();
+    try {
+      gmsh::clear();
+    } catch (...) {
+    }
+    throw InputError(file_where, fmt::format("cannot read mesh file '{}': {}", file.string(), why));
+  }
+  gmsh::clear();
+  return SimplexRegion(dimension, std::move(corners));
+}
 
 void import_gmsh_part(FemMesh& mesh, const GmshPartRequest& request) {
   namespace fs = std::filesystem;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "mesh/simplex_region.hpp"
 #include "model/model.hpp"
 
 namespace camouflet {
@@ -28,5 +29,19 @@ struct GmshPartRequest {
 // file has them clockwise (2-D) or left-handed (3-D), and faces are oriented
 // with their normal pointing out of the element they bound. Throws InputError.
 void import_gmsh_part(FemMesh& mesh, const GmshPartRequest& request);
+
+}  // namespace camouflet
+
+namespace camouflet {
+
+// The region covered by the elements of one physical group of dimension
+// `dimension` (a surface in 2-D, a volume in 3-D), cut into simplices, for
+// filling an SPH part with particles (mesh/particle_fill.hpp). Linear element
+// types only: triangles and quadrilaterals (2-D); tetrahedra, hexahedra,
+// prisms and pyramids (3-D); quadrilateral and hexahedron faces are assumed
+// planar (cut along a diagonal). Throws InputError naming the keys.
+SimplexRegion import_gmsh_region(int dimension, const std::filesystem::path& file,
+                                 const std::string& physical, const SourceLocation& file_where,
+                                 const SourceLocation& physical_where);
 
 }  // namespace camouflet

@@ -79,6 +79,8 @@ bool ParticleRegion::contains(const double* x, int dim) const {
       }
       return inside;
     }
+    case Shape::mesh:
+      return mesh && mesh->contains(x);
   }
   return false;
 }
@@ -110,6 +112,9 @@ std::pair<std::array<double, 3>, std::array<double, 3>> ParticleRegion::bounds(i
       hi = lo;
       for (const auto& v : polygon)
         for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], v[d]), hi[d] = std::max(hi[d], v[d]);
+      return {lo, hi};
+    case Shape::mesh:
+      if (mesh) return {mesh->lower(), mesh->upper()};
       return {lo, hi};
   }
   return {lo, hi};

@@ -20,15 +20,17 @@
 // smoothing_factor x spacing (sph/particles.hpp); spacing here is the cell
 // edge (its area^(1/2) or volume^(1/3)).
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "core/error.hpp"
+#include "mesh/simplex_region.hpp"
 #include "model/model.hpp"
 
 namespace camouflet {
 
 struct ParticleRegion {
-  enum class Shape { box, sphere, cylinder, polygon };
+  enum class Shape { box, sphere, cylinder, polygon, mesh };
   Shape shape = Shape::box;
   std::array<double, 3> min{}, max{};          // box corners, m
   std::array<double, 3> centre{};              // sphere (circle in 2-D) / cylinder base centre, m
@@ -36,6 +38,7 @@ struct ParticleRegion {
   std::array<double, 3> axis{0, 0, 1};         // cylinder axis (3-D), unit length not required
   double length = 0.0;                         // cylinder length along axis, m
   std::vector<std::array<double, 2>> polygon;  // 2-D vertices, either orientation
+  std::shared_ptr<const SimplexRegion> mesh;   // Gmsh physical surface (2-D) / volume (3-D)
 
   bool contains(const double* x, int dimension) const;
   // Axis-aligned bounding box (lo, hi).

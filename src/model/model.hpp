@@ -136,6 +136,10 @@ struct GaugePoint {
   std::string name;
   std::array<double, 3> position{};  // m, initial (Lagrangian: it moves with the material)
   SourceLocation where;
+  // Among particles: false = follow the nearest particle (Lagrangian); true =
+  // stay at `position` and interpolate the particles there with the kernel
+  // (Shepard-normalised; output/gauges.hpp). Set by the group's `particles` key.
+  bool interpolate = false;
 };
 
 struct GaugeGroup {

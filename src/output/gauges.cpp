@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace camouflet {
 
@@ -48,6 +49,73 @@ void push_stress(std::vector<double>& out, std::span<const SymTensor> stress,
   out.push_back(at_or_zero(damage, index));
 }
 
+// Cubic B-spline W(r, h) (Monaghan 1992, eq. 2.6), support 2h, in `dim` dimensions.
+double cubic_spline(double r, double h, int dim) {
+  const double q = r / h;
+  if (q >= support_in_h) return 0.0;
+  const double sigma =
+      dim == 2 ? 10.0 / (7.0 * std::numbers::pi * h * h) : 1.0 / (std::numbers::pi * h * h * h);
+  if (q < 1.0) return sigma * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+  const double t = 2.0 - q;
+  return sigma * 0.25 * t * t * t;
+}
+
+// Shepard weights V_j W(|x - x_j|, h_j) of the particles around `point`: (index, weight) and their sum.
+std::vector<std::pair<std::size_t, double>> shepard_weights(const FieldSnapshot& s, const double* point,
+                                                            double& total) {
+  const int dim = s.dimension;
+  const bool axisymmetric = s.mode == GeometryMode::axisymmetric;
+  std::vector<std::pair<std::size_t, double>> w;
+  total = 0.0;
+  if (s.particle_smoothing_length.empty() || s.particle_mass.empty() || s.particle_density.empty()) return w;
+  for (std::size_t p = 0; p < s.particle_count(); ++p) {
+    const double* x = &s.particle_position[p * static_cast<std::size_t>(dim)];
+    const double h = s.particle_smoothing_length[p];
+    double r2 = 0.0;
+    for (int i = 0; i < dim; ++i) r2 += (x[i] - point[i]) * (x[i] - point[i]);
+    if (r2 >= support_in_h * support_in_h * h * h) continue;
+    const double weight_geometry = axisymmetric ? 2.0 * std::numbers::pi * x[0] : 1.0;
+    const double volume = s.particle_mass[p] / (s.particle_density[p] * weight_geometry);
+    const double wj = volume * cubic_spline(std::sqrt(r2), h, dim);
+    if (!(wj > 0.0)) continue;
+    w.emplace_back(p, wj);
+    total += wj;
+  }
+  return w;
+}
+
+void sample_interpolated(const LocatedGauge& gauge, const FieldSnapshot& s, std::vector<double>& out) {
+  const int dim = s.dimension;
+  double total = 0.0;
+  const auto w = shepard_weights(s, gauge.point.data(), total);
+  auto vector_field = [&](std::span<const double> field) {
+    for (int i = 0; i < dim; ++i) {
+      double v = 0.0;
+      if (!field.empty() && total > 0.0)
+        for (const auto& [p, wp] : w)
+          v += wp * field[p * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i)];
+      out.push_back(total > 0.0 ? v / total : std::numeric_limits<double>::quiet_NaN());
+    }
+  };
+  for (int i = 0; i < dim; ++i) out.push_back(gauge.point[static_cast<std::size_t>(i)]);
+  vector_field(s.particle_displacement);
+  vector_field(s.particle_velocity);
+  vector_field(s.particle_acceleration);
+  // A point no particle covers any more (the material moved away) samples NaN: nothing to interpolate.
+  SymTensor sigma{};
+  double pressure = 0.0, plastic = 0.0, damage = 0.0;
+  for (const auto& [p, wp] : w) {
+    if (!s.particle_stress.empty()) sigma += s.particle_stress[p] * wp;
+    pressure += wp * at_or_zero(s.particle_pressure, static_cast<std::int64_t>(p));
+    plastic += wp * at_or_zero(s.particle_plastic_strain, static_cast<std::int64_t>(p));
+    damage += wp * at_or_zero(s.particle_damage, static_cast<std::int64_t>(p));
+  }
+  const double inv = total > 0.0 ? 1.0 / total : std::numeric_limits<double>::quiet_NaN();
+  sigma = sigma * inv;
+  out.insert(out.end(), {sigma.xx, sigma.yy, sigma.zz, sigma.xy, sigma.yz, sigma.zx});
+  out.insert(out.end(), {pressure * inv, plastic * inv, damage * inv});
+}
+
 }  // namespace
 
 std::vector<std::string> gauge_quantities(int dim) {
@@ -65,6 +133,23 @@ LocatedGauge locate_gauge(const GaugePoint& gauge, const FieldSnapshot& initial)
   LocatedGauge located;
   located.name = gauge.name;
   const std::span<const double> x(gauge.position.data(), static_cast<std::size_t>(dim));
+  if (gauge.interpolate) {
+    // Kernel interpolation among particles at a fixed point.
+    if (initial.element_count() > 0 && locate_point(dim, initial.node_position, initial.connectivity, x))
+      throw InputError(
+          gauge.where,
+          fmt::format("gauge '{}' at ({}) lies in the mesh; `particles = \"interpolate\"` samples "
+                      "particles only (use a separate gauge group for element gauges)",
+                      gauge.name, fmt::join(x.begin(), x.end(), ", ")));
+    double total = 0.0;
+    shepard_weights(initial, gauge.position.data(), total);
+    if (!(total > 0.0))
+      throw InputError(gauge.where, fmt::format("gauge '{}' at ({}) lies outside every particle's support",
+                                                gauge.name, fmt::join(x.begin(), x.end(), ", ")));
+    located.interpolate = true;
+    located.point = gauge.position;
+    return located;
+  }
   if (initial.element_count() > 0) {
     if (const auto loc = locate_point(dim, initial.node_position, initial.connectivity, x)) {
       located.element = loc->element;
@@ -107,6 +192,7 @@ void sample_gauge(const LocatedGauge& gauge, const FieldSnapshot& s, std::vector
                 gauge.element);
     return;
   }
+  if (gauge.interpolate) return sample_interpolated(gauge, s, out);
   for (auto field :
        {s.particle_position, s.particle_displacement, s.particle_velocity, s.particle_acceleration})
     push_vector(out, field, gauge.particle, dim);

@@ -6,6 +6,18 @@
 // quantities come from the element's integration point. A gauge outside every
 // element follows the nearest particle at t = 0, when it lies within that
 // particle's support.
+//
+// A gauge with GaugePoint::interpolate (group key `particles = "interpolate"`)
+// stays at its position instead and samples the particles there by kernel
+// interpolation, Shepard-normalised (Randles & Libersky 1996, CMAME 139;
+// Liu & Liu 2003, "Smoothed Particle Hydrodynamics", section 4.3):
+//     A(x) = sum_j V_j A_j W(|x - x_j|, h_j) / sum_j V_j W(|x - x_j|, h_j),
+// V_j = m_j / rho_j (axisymmetric: the meridian area m_j / (2 pi r_j rho_j)),
+// with the cubic B-spline whatever kernel the run uses. The normalisation
+// makes constant fields exact and linear ones exact where the support is
+// symmetric (interior). Its position column is the fixed point; the other
+// columns are interpolated. Cost: one pass over the particles per gauge and sample.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,9 +30,11 @@ namespace camouflet {
 
 struct LocatedGauge {
   std::string name;
-  std::int64_t element = -1;   // 0-based; -1 when following a particle
-  Natural xi{};                // natural coordinates in `element`
-  std::int64_t particle = -1;  // 0-based; -1 when in an element
+  std::int64_t element = -1;      // 0-based; -1 when following a particle
+  Natural xi{};                   // natural coordinates in `element`
+  std::int64_t particle = -1;     // 0-based; -1 when in an element
+  bool interpolate = false;       // fixed point, kernel-interpolated among particles
+  std::array<double, 3> point{};  // m, the fixed point of an interpolating gauge
 };
 
 // Column names sampled for every gauge, in CSV order: position, displacement,
@@ -30,7 +44,7 @@ struct LocatedGauge {
 std::vector<std::string> gauge_quantities(int dim);
 
 // Throws InputError at gauge.where when the point lies outside the mesh and
-// outside every particle's support.
+// outside every particle's support, or when an interpolating gauge lies in the mesh.
 LocatedGauge locate_gauge(const GaugePoint& gauge, const FieldSnapshot& initial);
 
 // Values of every gauge_quantities() column at this instant, appended to `out`.

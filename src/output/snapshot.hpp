@@ -44,6 +44,7 @@ struct FieldSnapshot {
   std::span<const double> particle_damage;
   std::span<const int> particle_material;
   std::span<const double> particle_smoothing_length;  // m
+  std::span<const double> particle_mass;              // kg (axisymmetric: mass of the ring)
   std::span<const int> particle_neighbour_count;
 
   std::size_t node_count() const { return node_position.size() / static_cast<std::size_t>(dimension); }

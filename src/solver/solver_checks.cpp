@@ -38,10 +38,14 @@ std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
                        position_text<D>(c));
   }
   if (kind == EntityKind::particle && particles_ && k < particles_->size()) {
+    // Particles are named by id; the memory index differs once they are re-sorted by cell.
     const auto& p = particles_->particles();
+    std::size_t i = k;
+    for (std::size_t j = 0; j < p.real; ++j)
+      if (p.id[j] == k) i = j;
     return fmt::format("material '{}', position {}",
-                       model_.materials[static_cast<std::size_t>(p.material[k])].name,
-                       position_text<D>(p.position[k].c.data()));
+                       model_.materials[static_cast<std::size_t>(p.material[i])].name,
+                       position_text<D>(p.position[i].c.data()));
   }
   if (kind == EntityKind::node && k < node_mass_.size())
     return fmt::format("position {}", position_text<D>(&position_[k * D]));
@@ -91,12 +95,12 @@ void Solver<D>::check_nodes_and_particles() const {
     bool finite = true;
     for (int d = 0; d < D; ++d) finite = finite && std::isfinite(x[d]) && std::isfinite(p.velocity[i][d]);
     if (!finite)
-      fail(NumericalError(EntityKind::particle, static_cast<std::int64_t>(i + 1), "velocity",
+      fail(NumericalError(EntityKind::particle, static_cast<std::int64_t>(p.id[i]) + 1, "velocity",
                           "non-finite position or velocity"));
     const int axis = outside(x);
     if (axis >= 0)
       fail(NumericalError(
-          EntityKind::particle, static_cast<std::int64_t>(i + 1), "position",
+          EntityKind::particle, static_cast<std::int64_t>(p.id[i]) + 1, "position",
           fmt::format("left the domain box: coordinate {} = {:.6g} m outside [{:.6g}, {:.6g}] m", axis + 1,
                       x[axis], run.domain_min[static_cast<std::size_t>(axis)],
                       run.domain_max[static_cast<std::size_t>(axis)])));

@@ -1,5 +1,8 @@
 #include "sph/sph_options.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <stdexcept>
 
 namespace camouflet::sph {
@@ -35,6 +38,12 @@ SphOptions read_sph_options(Parameters& block) {
   o.xsph = block.in_range("xsph", 0.0, 1.0, o.xsph);
   o.kernel_correction = block.flag("kernel_correction", o.kernel_correction);
   o.skin_factor = block.non_negative("skin_factor", o.skin_factor);
+  const double sort_interval = block.number("sort_interval", o.sort_interval);
+  if (!(sort_interval >= 0.0 && sort_interval <= 1e6) || sort_interval != std::floor(sort_interval))
+    block.fail(
+        "sort_interval",
+        fmt::format("must be a whole number in [0, 1000000] (0 = never re-sort), got {}", sort_interval));
+  o.sort_interval = static_cast<int>(sort_interval);
   return o;
 }
 

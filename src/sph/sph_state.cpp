@@ -60,6 +60,12 @@ void SphSystem<D>::visit_state(StateVisitor& v) {
   visit(v, "neighbour_count", p.neighbour_count);
   visit(v, "strain_rate", p.strain_rate);
   visit(v, "spin", p.spin);
+  visit(v, "id", p.id);
+  visit(v, "builds_at_sort", builds_at_sort_);
+  visit(v, "sorts", sorts_);
+  int force_rebuild = force_rebuild_ ? 1 : 0;
+  visit(v, "force_rebuild", force_rebuild);
+  force_rebuild_ = force_rebuild != 0;
 
   std::vector<std::uint32_t> ghost_source, ghost_plane;
   for (const Ghost& g : ghosts_) {

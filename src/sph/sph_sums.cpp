@@ -46,6 +46,10 @@ bool invert(const double m[D][D], double inv[D][D]) {
 
 template <int D>
 void SphSystem<D>::compute_accelerations() {
+  // Re-sort by cell every sort_interval list rebuilds: here, at the start of
+  // the force stage, no other stage holds per-particle arrays of its own.
+  if (options_.sort_interval > 0 && search_.builds() - builds_at_sort_ >= options_.sort_interval)
+    sort_by_cell();
   const std::size_t n = p_.real;
   const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   if (options_.artificial_stress) {
@@ -128,6 +132,13 @@ void SphSystem<D>::kick(double dt) {
   const auto& h = p_.smoothing_length;
   const auto& v_old = velocity_old_;
   const auto& v_new = p_.velocity;
+  // The artificial stress is a pair force T_ij . grad W with T_ij = f^n (R_i + R_j)
+  // that no constitutive law books: its work is booked the same way, as
+  // de_i = -1/2 sum_j m_j vbar_ij . T_ij . grad W dt, so that kinetic +
+  // internal energy stays conserved (it is reversible over a tension cycle;
+  // docs/theory/sph.md).
+  const bool tensile = options_.artificial_stress;
+  const double power = options_.artificial_stress_power, factor = options_.smoothing_factor;
 #pragma omp parallel for schedule(dynamic, 128)
   for (std::size_t i = 0; i < n; ++i) {
     double heat = 0.0;
@@ -138,14 +149,26 @@ void SphSystem<D>::kick(double dt) {
       if (r2 >= support_factor * support_factor * hij * hij) continue;
       const Vec<D> dv = v_old[i] - v_old[j];
       const double vr = dot(dv, dx);
-      if (vr >= 0.0) continue;
-      const double mu = hij * vr / (r2 + 0.01 * hij * hij);
-      const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-      const PairViscosity q = pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]);
-      const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
-      const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(std::sqrt(r2), hij));
+      if (vr >= 0.0 && !tensile) continue;
+      const double r = std::sqrt(r2);
+      const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(r, hij));
       const Vec<D> mean_dv = (dv + (v_new[i] - v_new[j])) * 0.5;
-      heat += 0.5 * m[j] * pi_ij * dot(mean_dv, grad);
+      if (vr < 0.0) {
+        const double mu = hij * vr / (r2 + 0.01 * hij * hij);
+        const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+        const PairViscosity q = pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]);
+        const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+        heat += 0.5 * m[j] * pi_ij * dot(mean_dv, grad);
+      }
+      if (tensile) {
+        const SymTensor& ri = p_.tensile_term[i];
+        const SymTensor& rj = p_.tensile_term[j];
+        if (ri.xx == 0.0 && ri.yy == 0.0 && ri.xy == 0.0 && rj.xx == 0.0 && rj.yy == 0.0 && rj.xy == 0.0 &&
+            ri.zz == 0.0 && rj.zz == 0.0)
+          continue;
+        const double f = kernel_.value(r, hij) / kernel_.value(hij / factor, hij);
+        heat -= 0.5 * m[j] * std::pow(f, power) * dot(mean_dv, apply<D>(ri + rj, grad));
+      }
     }
     p_.heating[i] += heat * dt;
   }
@@ -186,7 +209,7 @@ void SphSystem<D>::drift(double dt) {
   if (mode_ == GeometryMode::axisymmetric)
     for (std::size_t i = 0; i < n; ++i)
       if (!(p_.position[i][0] > 0.0))
-        throw NumericalError(EntityKind::particle, static_cast<std::int64_t>(i + 1), "radius",
+        throw NumericalError(EntityKind::particle, static_cast<std::int64_t>(p_.id[i]) + 1, "radius",
                              fmt::format("particle crossed the axis (r = {:.6g} m)", p_.position[i][0]));
 }
 

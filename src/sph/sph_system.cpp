@@ -62,6 +62,8 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   p_.neighbour_count.assign(n, 0);
   p_.strain_rate.resize(n);
   p_.spin.resize(n);
+  p_.id.resize(n);
+  for (std::size_t i = 0; i < n; ++i) p_.id[i] = static_cast<std::uint32_t>(i);
 
   materials_.resize(model.materials.size());
   batches_.resize(model.materials.size());
@@ -136,7 +138,7 @@ void SphSystem<D>::gather_material_state() {
         !std::isfinite(p_.stress[i].xx + p_.stress[i].yy + p_.stress[i].xy) ||
         !std::isfinite(p_.wave_speed[i]))
       throw NumericalError(
-          EntityKind::particle, static_cast<std::int64_t>(i + 1), "stress",
+          EntityKind::particle, static_cast<std::int64_t>(p_.id[i]) + 1, "stress",
           fmt::format("non-finite stress or sound speed (density {:.6g} kg/m^3)", p_.density[i]));
 }
 
@@ -160,8 +162,7 @@ void SphSystem<D>::refresh_ghosts() {
     p_.correction[k] = mirror_tensor(p_.correction[s], plane.axis);
   }
   if (external_count_ > 0 && external_begin_ >= n && n > 0 &&
-      p_.position.size() == external_begin_ + external_count_ &&
-      p_.velocity.size() == p_.position.size())
+      p_.position.size() == external_begin_ + external_count_ && p_.velocity.size() == p_.position.size())
     external_provider_(p_, external_begin_);
 }
 
@@ -169,7 +170,8 @@ template <int D>
 void SphSystem<D>::prepare_neighbours() {
   const std::size_t n = p_.real;
   refresh_ghosts();
-  if (!search_.needs_rebuild(p_.position, p_.smoothing_length)) return;
+  if (!force_rebuild_ && !search_.needs_rebuild(p_.position, p_.smoothing_length)) return;
+  force_rebuild_ = false;
   double h_max = 0.0;
   for (std::size_t i = 0; i < n; ++i) h_max = std::max(h_max, p_.smoothing_length[i]);
   ghost_reach_ = support_factor * h_max + skin_;
@@ -188,6 +190,68 @@ void SphSystem<D>::prepare_neighbours() {
   p_.viscosity_alpha.resize(total, options_.viscosity_alpha);
   refresh_ghosts();
   search_.build(p_.position, p_.smoothing_length, n, skin_);
+}
+
+template <int D>
+template <class T>
+void SphSystem<D>::permute(std::vector<T>& a, const std::vector<std::uint32_t>& order) const {
+  if (a.size() < order.size()) return;  // not allocated (e.g. v(n-1/2) before the first kick)
+  std::vector<T> moved(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) moved[k] = a[order[k]];
+  std::copy(moved.begin(), moved.end(), a.begin());
+}
+
+template <int D>
+void SphSystem<D>::sort_by_cell() {
+  const std::size_t n = p_.real;
+  builds_at_sort_ = search_.builds();
+  // order[k] = the particle that moves to index k: real particles in the cell
+  // order of the last build (a stable counting sort by cell).
+  std::vector<std::uint32_t> order;
+  order.reserve(n);
+  for (const std::uint32_t i : search_.cell_order())
+    if (i < n) order.push_back(i);
+  if (order.size() != n) return;  // no build yet
+  bool identity = true;
+  for (std::size_t k = 0; k < n && identity; ++k) identity = order[k] == k;
+  if (identity) return;
+  auto& p = p_;
+  permute(p.position, order);
+  permute(p.velocity, order);
+  permute(p.mass, order);
+  permute(p.planar_density, order);
+  permute(p.smoothing_length, order);
+  permute(p.stress_term, order);
+  permute(p.tensile_term, order);
+  permute(p.wave_speed, order);
+  permute(p.correction, order);
+  permute(p.id, order);
+  permute(p.acceleration, order);
+  permute(p.displacement, order);
+  permute(p.density, order);
+  permute(p.reference_smoothing_length, order);
+  permute(p.reference_planar_density, order);
+  permute(p.spacing, order);
+  permute(p.stress, order);
+  permute(p.pressure, order);
+  permute(p.plastic_strain, order);
+  permute(p.damage, order);
+  permute(p.material, order);
+  permute(p.part, order);
+  permute(p.slot, order);
+  permute(p.heating, order);
+  permute(p.compression_rate, order);
+  permute(p.viscosity_alpha, order);  // the viscosity switch's per-particle alpha
+  permute(p.neighbour_count, order);
+  permute(p.strain_rate, order);
+  permute(p.spin, order);
+  permute(velocity_old_, order);
+  // The material batches stay in id order; their slots point at the new indices.
+  for (std::size_t i = 0; i < n; ++i)
+    batch_particles_[p.material[i]][p.slot[i]] = static_cast<std::uint32_t>(i);
+  force_rebuild_ = true;                   // ghosts and lists refer to the old indices
+  builds_at_sort_ = search_.builds() + 1;  // that forced rebuild does not count towards the next sort
+  ++sorts_;
 }
 
 template <int D>
@@ -210,7 +274,7 @@ TimeStepLimit SphSystem<D>::stable_time_step() const {
     if (dt < best.dt) best.dt = dt, which = i;
   }
   if (p_.real && std::isfinite(best.dt))
-    best.reason = fmt::format("particle {} ({}): h/(c+|v|+viscosity)", which + 1,
+    best.reason = fmt::format("particle {} ({}): h/(c+|v|+viscosity)", p_.id[which] + 1,
                               materials_[p_.material[which]]->name());
   return best;
 }
@@ -252,6 +316,41 @@ void SphSystem<D>::fill_snapshot(FieldSnapshot& s) const {
   auto flat = [n](const std::vector<Vec<D>>& v) {
     return std::span<const double>(reinterpret_cast<const double*>(v.data()), D * n);
   };
+  if (sorts_ > 0) {
+    // Memory order differs from id order: gather copies by id.
+    auto& c = id_order_;
+    auto by_id = [&](auto& out, const auto& in) {
+      out.resize(n);
+      for (std::size_t i = 0; i < n; ++i) out[p_.id[i]] = in[i];
+    };
+    by_id(c.position, p_.position);
+    by_id(c.displacement, p_.displacement);
+    by_id(c.velocity, p_.velocity);
+    by_id(c.acceleration, p_.acceleration);
+    by_id(c.density, p_.density);
+    by_id(c.pressure, p_.pressure);
+    by_id(c.stress, p_.stress);
+    by_id(c.plastic_strain, p_.plastic_strain);
+    by_id(c.damage, p_.damage);
+    by_id(c.material, p_.material);
+    by_id(c.smoothing_length, p_.smoothing_length);
+    by_id(c.neighbour_count, p_.neighbour_count);
+    by_id(c.mass, p_.mass);
+    s.particle_position = flat(c.position);
+    s.particle_displacement = flat(c.displacement);
+    s.particle_velocity = flat(c.velocity);
+    s.particle_acceleration = flat(c.acceleration);
+    s.particle_density = c.density;
+    s.particle_pressure = c.pressure;
+    s.particle_stress = c.stress;
+    s.particle_plastic_strain = c.plastic_strain;
+    s.particle_damage = c.damage;
+    s.particle_material = c.material;
+    s.particle_smoothing_length = c.smoothing_length;
+    s.particle_neighbour_count = c.neighbour_count;
+    s.particle_mass = c.mass;
+    return;
+  }
   s.particle_position = flat(p_.position);
   s.particle_displacement = flat(p_.displacement);
   s.particle_velocity = flat(p_.velocity);
@@ -264,6 +363,7 @@ void SphSystem<D>::fill_snapshot(FieldSnapshot& s) const {
   s.particle_material = p_.material;
   s.particle_smoothing_length = std::span<const double>(p_.smoothing_length.data(), n);
   s.particle_neighbour_count = p_.neighbour_count;
+  s.particle_mass = std::span<const double>(p_.mass.data(), n);
 }
 
 template class SphSystem<2>;

@@ -73,6 +73,10 @@ struct ParticleArrays {
   std::vector<SymTensor> correction;     // kernel-gradient correction B = M^-1 (identity when off)
   std::vector<double> viscosity_alpha;   // linear viscosity coefficient (SphOptions::viscosity_switch)
   // --- particles only ---
+  // Persistent particle id (0-based index in model.particles): memory order
+  // changes when particles are re-sorted by cell (SphOptions::sort_interval);
+  // output, gauges and messages use the id.
+  std::vector<std::uint32_t> id;
   std::vector<Vec<D>> acceleration;                // m/s^2
   std::vector<Vec<D>> displacement;                // m, from the initial position
   std::vector<double> density;                     // kg/m^3
@@ -132,8 +136,11 @@ class SphSystem {
   double internal_energy() const;  // J
   Vec<D> momentum() const;         // kg m/s
 
-  // Particle fields of a FieldSnapshot (spans into this object).
+  // Particle fields of a FieldSnapshot, in id order: spans into this object,
+  // or, once particles have been re-sorted, into copies gathered by id.
   void fill_snapshot(FieldSnapshot& snapshot) const;
+  // Number of re-sorts by cell so far (sort_by_cell()).
+  std::int64_t sorts() const { return sorts_; }
   const NeighbourSearch<D>& neighbours() const { return search_; }
 
   // --- coupling seam (coupling/sph_fem_join.hpp) ---
@@ -160,6 +167,12 @@ class SphSystem {
 
  private:
   void prepare_neighbours();
+  // Reorders the particle arrays into the cell order of the last neighbour
+  // build (real particles only; ghosts and lists are rebuilt next), so that
+  // neighbours sit close in memory. Ids, batch slots and v(n-1/2) follow.
+  void sort_by_cell();
+  template <class T>
+  void permute(std::vector<T>& a, const std::vector<std::uint32_t>& order) const;
   void compute_correction();
   // Kernel gradient of the pair: grad_i W_ij, or with the correction the
   // antisymmetric 1/2 (B_i + B_j) grad_i W_ij (so momentum stays conserved).
@@ -185,7 +198,17 @@ class SphSystem {
   std::vector<std::shared_ptr<const Material>> materials_;   // by Model::materials index
   std::vector<MaterialPoints> batches_;                      // by Model::materials index
   std::vector<std::vector<std::uint32_t>> batch_particles_;  // particle of each slot
-  std::size_t external_begin_ = 0, external_count_ = 0;      // coupling seam
+  bool force_rebuild_ = false;                               // after a re-sort
+  std::int64_t builds_at_sort_ = 0, sorts_ = 0;              // re-sort bookkeeping
+  // Copies in id order for fill_snapshot() once the memory order differs.
+  struct IdOrderCopy {
+    std::vector<Vec<D>> position, displacement, velocity, acceleration;
+    std::vector<double> density, pressure, plastic_strain, damage, smoothing_length, mass;
+    std::vector<SymTensor> stress;
+    std::vector<int> material, neighbour_count;
+  };
+  mutable IdOrderCopy id_order_;
+  std::size_t external_begin_ = 0, external_count_ = 0;  // coupling seam
   ExternalProvider external_provider_;
 };
 

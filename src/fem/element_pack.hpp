@@ -1,0 +1,43 @@
+#pragma once
+// Elements are processed in packs of `pack_width`: lane l of a Pack holds the
+// value of element e0 + l, so the element formulas (shape.hpp) run on whole
+// SIMD registers without the compiler having to discover the vectorisation.
+// The width follows the target (-march; CMake option CAMOUFLET_NATIVE): 8
+// doubles with AVX-512, 4 with AVX, 2 with SSE2. GCC/Clang vector extension;
+// arithmetic with a scalar broadcasts it. docs/performance.md.
+#include <cmath>
+
+namespace camouflet {
+
+#if defined(__AVX512F__)
+inline constexpr int pack_width = 8;
+#elif defined(__AVX__)
+inline constexpr int pack_width = 4;
+#else
+inline constexpr int pack_width = 2;
+#endif
+
+using Pack = double __attribute__((vector_size(pack_width * sizeof(double))));
+
+inline Pack broadcast(double s) {
+  return Pack{} + s;
+}
+
+// Lane-wise max and square root; the double overloads let shape.hpp's
+// formulas serve single elements and packs alike.
+inline double max_of(double a, double b) {
+  return a < b ? b : a;
+}  // as std::max
+inline double sqrt_of(double a) {
+  return std::sqrt(a);
+}
+inline Pack max_of(Pack a, const Pack& b) {
+  for (int l = 0; l < pack_width; ++l) a[l] = a[l] < b[l] ? b[l] : a[l];
+  return a;
+}
+inline Pack sqrt_of(Pack a) {
+  for (int l = 0; l < pack_width; ++l) a[l] = std::sqrt(a[l]);
+  return a;
+}
+
+}  // namespace camouflet

@@ -2,19 +2,22 @@
 // Elements are processed in packs of `pack_width`: lane l of a Pack holds the
 // value of element e0 + l, so the element formulas (shape.hpp) run on whole
 // SIMD registers without the compiler having to discover the vectorisation.
-// The width follows the target (-march; CMake option CAMOUFLET_NATIVE): 8
-// doubles with AVX-512, 4 with AVX, 2 with SSE2. GCC/Clang vector extension;
-// arithmetic with a scalar broadcasts it. docs/performance.md.
+// The width follows the target (-march; CMake option CAMOUFLET_NATIVE builds
+// src/fem for this CPU): 8 doubles with AVX-512, 4 with AVX, 2 with SSE2.
+// pack_width has internal linkage, so translation units built for different
+// targets (the fem layer, tests including shape.hpp) each see their own.
+// GCC/Clang vector extension; arithmetic with a scalar broadcasts it.
+// docs/performance.md.
 #include <cmath>
 
 namespace camouflet {
 
 #if defined(__AVX512F__)
-inline constexpr int pack_width = 8;
+constexpr int pack_width = 8;
 #elif defined(__AVX__)
-inline constexpr int pack_width = 4;
+constexpr int pack_width = 4;
 #else
-inline constexpr int pack_width = 2;
+constexpr int pack_width = 2;
 #endif
 
 using Pack = double __attribute__((vector_size(pack_width * sizeof(double))));

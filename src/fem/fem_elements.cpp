@@ -3,11 +3,14 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 
 #include "core/error.hpp"
+#include "fem/element_pack.hpp"
 #include "fem/parallel.hpp"
 #include "fem/shape.hpp"
 
@@ -40,37 +43,54 @@ inline double ring_weight(bool axisymmetric, const NodeValues<D>& x, double& r_b
   return 1.0;
 }
 
+template <int D>
+using PackedNodes = Pack[D][Shape<D>::nodes];
+
+// Lane l <- element (first + l); lanes past `count` repeat the last element
+// (their results are never scattered).
+template <int D>
+inline void gather_pack(const double* field, const std::int64_t* conn, int count, PackedNodes<D>& out) {
+  constexpr int N = Shape<D>::nodes;
+  alignas(sizeof(Pack)) double lanes[D][N][pack_width];  // the layout of PackedNodes<D>
+  for (int l = 0; l < pack_width; ++l) {
+    const std::int64_t* c = conn + (l < count ? l : count - 1) * N;
+    for (int a = 0; a < N; ++a)
+      for (int i = 0; i < D; ++i) lanes[i][a][l] = field[c[a] * D + i];
+  }
+  static_assert(sizeof lanes == sizeof out);
+  std::memcpy(&out, lanes, sizeof out);
+}
+
+template <int D>
+inline Pack ring_weight_pack(bool axisymmetric, const PackedNodes<D>& x, Pack& r_bar) {
+  if constexpr (D == 2) {
+    if (axisymmetric) {
+      r_bar = 0.25 * (x[0][0] + x[0][1] + x[0][2] + x[0][3]);
+      return two_pi * r_bar;
+    }
+  }
+  r_bar = Pack{};
+  return broadcast(1.0);
+}
+
 // gamma_alpha,a = Gamma_alpha,a - (Gamma_alpha . x_i) b_ia: the hourglass shape
 // vectors orthogonal to every linear velocity field (FB 1981, eq. 56, without
 // their 1/N so that the coefficient has the scale of the LS-DYNA Q_hg).
 template <int D>
-inline void hourglass_shapes(const NodeValues<D>& x, const NodeValues<D>& b,
-                             double (&g)[Shape<D>::modes][Shape<D>::nodes]) {
+inline void hourglass_shapes(const PackedNodes<D>& x, const PackedNodes<D>& b,
+                             Pack (&g)[Shape<D>::modes][Shape<D>::nodes]) {
   constexpr int N = Shape<D>::nodes;
   for (int m = 0; m < Shape<D>::modes; ++m) {
-    double gx[D];
+    Pack gx[D];
     for (int i = 0; i < D; ++i) {
-      gx[i] = 0.0;
+      gx[i] = Pack{};
       for (int a = 0; a < N; ++a) gx[i] += Shape<D>::base[m][a] * x[i][a];
     }
     for (int a = 0; a < N; ++a) {
-      double v = Shape<D>::base[m][a];
+      Pack v = broadcast(Shape<D>::base[m][a]);
       for (int i = 0; i < D; ++i) v -= gx[i] * b[i][a];
       g[m][a] = v;
     }
-  }
-}
-
-// Rows of the 3-D stress tensor restricted to the D in-plane components.
-template <int D>
-inline void stress_rows(const SymTensor& s, double (&sig)[D][D]) {
-  sig[0][0] = s.xx;
-  sig[0][1] = sig[1][0] = s.xy;
-  sig[1][1] = s.yy;
-  if constexpr (D == 3) {
-    sig[2][2] = s.zz;
-    sig[1][2] = sig[2][1] = s.yz;
-    sig[0][2] = sig[2][0] = s.zx;
   }
 }
 
@@ -126,89 +146,117 @@ template <int D>
 double FemElements<D>::add_internal_forces(const double* x, const double* v, double* f, double* f_hourglass,
                                            const HourglassControl& hg, double dt_previous) {
   constexpr int N = nodes;
+  constexpr int W = pack_width;
   const bool axi = axisymmetric_;
   const bool viscous_hg = hg.form == HourglassForm::viscous && hg.coefficient > 0.0;
   const bool stiff_hg = hg.form == HourglassForm::stiffness && hg.coefficient > 0.0;
+  const std::size_t ne = size();
 
-  // One element: its forces scattered into f_out (and the hourglass part
-  // into fh_out); returns the stiffness-form hourglass energy it holds.
-  const auto element = [&](std::size_t e, double* f_out, double* fh_out) {
-    double stored = 0.0;
-    if (eroded[e]) return stored;  // an eroded element carries no force (issue 6)
-    const std::int64_t* conn = &connectivity[e * N];
-    NodeValues<D> xe, b, fe;
-    gather<D>(x, conn, xe);
-    const double measure = Shape<D>::gradients(xe, b);
-    double r_bar = 0.0;
-    const double w = ring_weight<D>(axi, xe, r_bar);
-    const double vol = measure * w;
+  // One pack of elements e0 .. e0 + count - 1 (element_pack.hpp): forces
+  // computed lane-parallel, scattered into f_out (and the hourglass part into
+  // fh_out) lane by lane; returns the stiffness-form hourglass energy held.
+  const auto pack = [&](std::size_t e0, double* f_out, double* fh_out) {
+    const int count = static_cast<int>(std::min<std::size_t>(W, ne - e0));
+    bool any = false;
+    for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
+    if (!any) return 0.0;  // an eroded element carries no force (issue 6)
+    const std::int64_t* conn = &connectivity[e0 * N];
+    PackedNodes<D> xe, b, fe;
+    gather_pack<D>(x, conn, count, xe);
+    const Pack measure = Shape<D>::gradients(xe, b);
+    Pack r_bar{};
+    const Pack w = ring_weight_pack<D>(axi, xe, r_bar);
+    const Pack vol = measure * w;
 
     // Stress divergence: f_ia = -V sigma_ij b_ja (FB 1981, eq. 17), with q as a pressure.
-    SymTensor s = stress[e];
-    const double q = viscosity[e];
-    s.xx -= q;
-    s.yy -= q;
-    s.zz -= q;
-    double sig[D][D];
-    stress_rows<D>(s, sig);
+    Pack sig[D][D] = {}, hoop{};
+    for (int l = 0; l < W; ++l) {
+      const std::size_t e = e0 + static_cast<std::size_t>(l < count ? l : count - 1);
+      const SymTensor& s = stress[e];
+      const double q = viscosity[e];
+      sig[0][0][l] = s.xx - q;
+      sig[1][1][l] = s.yy - q;
+      sig[0][1][l] = sig[1][0][l] = s.xy;
+      hoop[l] = s.zz - q;
+      if constexpr (D == 3) {
+        sig[2][2][l] = s.zz - q;
+        sig[1][2][l] = sig[2][1][l] = s.yz;
+        sig[0][2][l] = sig[2][0][l] = s.zx;
+      }
+    }
     for (int a = 0; a < N; ++a)
       for (int i = 0; i < D; ++i) {
-        double t = 0.0;
+        Pack t{};
         for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
         fe[i][a] = -vol * t;
       }
     if constexpr (D == 2) {
       // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
       // v_r at the centre = mean of the nodal v_r.
-      if (axi)
-        for (int a = 0; a < N; ++a) fe[0][a] -= vol * s.zz / (N * r_bar);
+      if (axi) {
+        const Pack hoop_force = vol * hoop / (N * r_bar);
+        for (int a = 0; a < N; ++a) fe[0][a] -= hoop_force;
+      }
     }
 
+    double stored = 0.0;
+    PackedNodes<D> fh;
     if (viscous_hg || stiff_hg) {
-      NodeValues<D> ve, fh;
-      gather<D>(v, conn, ve);
-      double g[Shape<D>::modes][N];
+      PackedNodes<D> ve;
+      gather_pack<D>(v, conn, count, ve);
+      Pack g[Shape<D>::modes][N];
       hourglass_shapes<D>(xe, b, g);
-      const double rho = density[e], c = wave_speed[e];
-      const double l = length[e];  // V / largest face, from the last kinematics (same geometry)
       // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
       // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
-      const double coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? l : l * l) * w
-                                     : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : l) * w;
-      double* hd = &hourglass_displacement[e * modes * D];
+      // l = V / largest face, from the last kinematics (same geometry).
+      Pack coef{};
+      for (int l = 0; l < W; ++l) {
+        const std::size_t e = e0 + static_cast<std::size_t>(l < count ? l : count - 1);
+        const double rho = density[e], c = wave_speed[e], le = length[e];
+        coef[l] = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? le : le * le)
+                             : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : le);
+      }
+      coef *= w;
       for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) fh[i][a] = 0.0;
+        for (int i = 0; i < D; ++i) fh[i][a] = Pack{};
       for (int m = 0; m < Shape<D>::modes; ++m)
         for (int i = 0; i < D; ++i) {
-          double rate = 0.0;
+          Pack rate{};
           for (int a = 0; a < N; ++a) rate += g[m][a] * ve[i][a];
-          double amplitude;
-          if (viscous_hg) {
-            amplitude = rate;
-          } else {
-            hd[m * D + i] += rate * dt_previous;
-            amplitude = hd[m * D + i];
-            stored += 0.5 * coef * amplitude * amplitude;
+          Pack amplitude = rate;
+          if (stiff_hg) {
+            for (int l = 0; l < count; ++l) {
+              double& hd = hourglass_displacement[(e0 + static_cast<std::size_t>(l)) * modes * D +
+                                                  static_cast<std::size_t>(m * D + i)];
+              if (!eroded[e0 + static_cast<std::size_t>(l)]) hd += rate[l] * dt_previous;
+              amplitude[l] = hd;
+              if (!eroded[e0 + static_cast<std::size_t>(l)]) stored += 0.5 * coef[l] * hd * hd;
+            }
           }
-          for (int a = 0; a < N; ++a) fh[i][a] -= coef * amplitude * g[m][a];
+          const Pack scaled = coef * amplitude;
+          for (int a = 0; a < N; ++a) fh[i][a] -= scaled * g[m][a];
         }
       for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) {
-          fe[i][a] += fh[i][a];
-          if (fh_out) fh_out[conn[a] * D + i] += fh[i][a];
-        }
+        for (int i = 0; i < D; ++i) fe[i][a] += fh[i][a];
     }
 
-    for (int a = 0; a < N; ++a)
-      for (int i = 0; i < D; ++i) f_out[conn[a] * D + i] += fe[i][a];
+    for (int l = 0; l < count; ++l) {
+      if (eroded[e0 + static_cast<std::size_t>(l)]) continue;
+      const std::int64_t* c = conn + l * N;
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < D; ++i) f_out[c[a] * D + i] += fe[i][a][l];
+      if (fh_out && (viscous_hg || stiff_hg))
+        for (int a = 0; a < N; ++a)
+          for (int i = 0; i < D; ++i) fh_out[c[a] * D + i] += fh[i][a][l];
+    }
     return stored;
   };
 
-  const std::int64_t ne = static_cast<std::int64_t>(size());
-  const int team = ne > parallel_threshold ? omp_get_max_threads() : 1;
+  const std::int64_t packs = static_cast<std::int64_t>((ne + W - 1) / W);
+  const int team = static_cast<std::int64_t>(ne) > parallel_threshold ? omp_get_max_threads() : 1;
   double stored = 0.0;
   if (team == 1) {
-    for (std::int64_t e = 0; e < ne; ++e) stored += element(static_cast<std::size_t>(e), f, f_hourglass);
+    for (std::int64_t k = 0; k < packs; ++k) stored += pack(static_cast<std::size_t>(k) * W, f, f_hourglass);
     return stored;
   }
   // Race-free assembly: thread 0 scatters into f, thread t > 0 into its own
@@ -232,7 +280,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
                      : t == 0               ? f_hourglass
                                             : thread_hourglass_force_[static_cast<std::size_t>(t - 1)].data();
 #pragma omp for schedule(static)
-    for (std::int64_t e = 0; e < ne; ++e) stored += element(static_cast<std::size_t>(e), f_out, fh_out);
+    for (std::int64_t k = 0; k < packs; ++k) stored += pack(static_cast<std::size_t>(k) * W, f_out, fh_out);
 #pragma omp for schedule(static)
     for (std::int64_t k = 0; k < nv; ++k) {
       for (int s = 0; s < team - 1; ++s) {
@@ -255,41 +303,46 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
                                             const ViscosityControl& visc,
                                             std::vector<MaterialPoints>& batches) {
   constexpr int N = nodes;
+  constexpr int W = pack_width;
   const bool axi = axisymmetric_;
-  const std::int64_t n = static_cast<std::int64_t>(size());
+  const std::size_t ne = size();
+  const std::int64_t packs = static_cast<std::int64_t>((ne + W - 1) / W);
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
   double viscous_work = 0.0;
-#pragma omp parallel for schedule(static) reduction(min : bad) reduction(+ : viscous_work) if (n > parallel_threshold)
-  for (std::int64_t k = 0; k < n; ++k) {
-    const std::size_t e = static_cast<std::size_t>(k);
-    if (eroded[e]) continue;
-    const std::int64_t* conn = &connectivity[e * N];
-    NodeValues<D> xe, ve, xh, b;
-    gather<D>(x, conn, xe);
-    gather<D>(v, conn, ve);
-    double speed2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(min : bad) reduction(+ : viscous_work) if (static_cast<std::int64_t>(ne) > parallel_threshold)
+  for (std::int64_t k = 0; k < packs; ++k) {
+    const std::size_t e0 = static_cast<std::size_t>(k) * W;
+    const int count = static_cast<int>(std::min<std::size_t>(W, ne - e0));
+    bool any = false;
+    for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
+    if (!any) continue;
+    const std::int64_t* conn = &connectivity[e0 * N];
+    PackedNodes<D> xe, ve, xh, b;
+    gather_pack<D>(x, conn, count, xe);
+    gather_pack<D>(v, conn, count, ve);
+    Pack speed2{};
     for (int a = 0; a < N; ++a) {
-      double s2 = 0.0;
+      Pack s2{};
       for (int i = 0; i < D; ++i) {
         xh[i][a] = xe[i][a] - 0.5 * dt * ve[i][a];
         s2 += ve[i][a] * ve[i][a];
       }
-      speed2 = std::max(speed2, s2);
+      speed2 = max_of(speed2, s2);
     }
 
     // Velocity gradient L_ij = sum_a v_ia b_ja on the mid-step geometry (FB 1981, eq. 14).
     Shape<D>::gradients(xh, b);
-    double L[3][3] = {};
+    Pack L[3][3] = {};
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) {
-        double t = 0.0;
+        Pack t{};
         for (int a = 0; a < N; ++a) t += ve[i][a] * b[j][a];
         L[i][j] = t;
       }
     if constexpr (D == 2) {
       if (axi) {
         // Hoop strain rate v_r / r at the element centre.
-        double vr = 0.0, r = 0.0;
+        Pack vr{}, r{};
         for (int a = 0; a < N; ++a) {
           vr += ve[0][a];
           r += xh[0][a];
@@ -297,52 +350,60 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
         L[2][2] = vr / r;
       }
     }
-    const SymTensor rate{L[0][0],
-                         L[1][1],
-                         L[2][2],
-                         0.5 * (L[0][1] + L[1][0]),
-                         0.5 * (L[1][2] + L[2][1]),
-                         0.5 * (L[2][0] + L[0][2])};
-    const Spin spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
 
     // New volume and density at t_{n+1}.
-    const double measure = Shape<D>::measure(xe);
-    double r_bar = 0.0;
-    const double w = ring_weight<D>(axi, xe, r_bar);
-    const double vol = measure * w;
-    if (!(vol > 0.0) || !std::isfinite(vol)) {
-      bad = std::min(bad, k);
-      continue;
+    const Pack measure = Shape<D>::measure(xe);
+    Pack r_bar{};
+    const Pack w = ring_weight_pack<D>(axi, xe, r_bar);
+    const Pack vol_pack = measure * w;
+    const Pack l_pack = Shape<D>::length(xe, measure);
+
+    for (int l = 0; l < count; ++l) {
+      const std::size_t e = e0 + static_cast<std::size_t>(l);
+      if (eroded[e]) continue;
+      const double vol = vol_pack[l];
+      if (!(vol > 0.0) || !std::isfinite(vol)) {
+        bad = std::min(bad, static_cast<std::int64_t>(e));
+        continue;
+      }
+      const SymTensor rate{L[0][0][l],
+                           L[1][1][l],
+                           L[2][2][l],
+                           0.5 * (L[0][1][l] + L[1][0][l]),
+                           0.5 * (L[1][2][l] + L[2][1][l]),
+                           0.5 * (L[2][0][l] + L[0][2][l])};
+      const Spin spin{0.5 * (L[0][1][l] - L[1][0][l]), 0.5 * (L[1][2][l] - L[2][1][l]),
+                      0.5 * (L[2][0][l] - L[0][2][l])};
+      const double rho = mass[e] / vol;
+      const double le = l_pack[l];
+
+      // Artificial bulk viscosity, compression only (von Neumann-Richtmyer
+      // quadratic + Landshoff linear): q = rho l (C_q^2 l |tr D| + C_l c) |tr D|.
+      const double div = rate.trace();
+      const double q =
+          div < 0.0
+              ? rho * le * (visc.quadratic * visc.quadratic * le * -div + visc.linear * wave_speed[e]) * -div
+              : 0.0;
+      // The force at t_n carried the previous q, the force at t_(n+1) carries
+      // this one; each acts over half of this step's volume change, so the
+      // energy equation is charged with their mean (time-centred q dV).
+      const double q_mean = 0.5 * (viscosity[e] + q);
+      viscous_work -= q_mean * (vol - volume[e]);
+
+      MaterialPoints& pts = batches[static_cast<std::size_t>(material[e])];
+      const std::size_t p = point[e];
+      pts.density_previous[p] = pts.density[p];
+      pts.density[p] = rho;
+      pts.strain_rate[p] = rate;
+      pts.spin[p] = spin;
+      pts.artificial_viscosity[p] = q_mean;
+      pts.characteristic_length[p] = le;
+      volume[e] = vol;
+      density[e] = rho;
+      viscosity[e] = q;
+      length[e] = le;
+      speed[e] = std::sqrt(speed2[l]);
     }
-    const double rho = mass[e] / vol;
-    const double l = Shape<D>::length(xe, measure);
-
-    // Artificial bulk viscosity, compression only (von Neumann-Richtmyer
-    // quadratic + Landshoff linear): q = rho l (C_q^2 l |tr D| + C_l c) |tr D|.
-    const double div = rate.trace();
-    const double q =
-        div < 0.0
-            ? rho * l * (visc.quadratic * visc.quadratic * l * -div + visc.linear * wave_speed[e]) * -div
-            : 0.0;
-    // The force at t_n carried the previous q, the force at t_(n+1) carries
-    // this one; each acts over half of this step's volume change, so the
-    // energy equation is charged with their mean (time-centred q dV).
-    const double q_mean = 0.5 * (viscosity[e] + q);
-    viscous_work -= q_mean * (vol - volume[e]);
-
-    MaterialPoints& pts = batches[static_cast<std::size_t>(material[e])];
-    const std::size_t p = point[e];
-    pts.density_previous[p] = pts.density[p];
-    pts.density[p] = rho;
-    pts.strain_rate[p] = rate;
-    pts.spin[p] = spin;
-    pts.artificial_viscosity[p] = q_mean;
-    pts.characteristic_length[p] = l;
-    volume[e] = vol;
-    density[e] = rho;
-    viscosity[e] = q;
-    length[e] = l;
-    speed[e] = std::sqrt(speed2);
   }
   KinematicsResult result;
   result.viscous_work = viscous_work;

@@ -3,10 +3,11 @@
 // (Flanagan & Belytschko 1981, IJNME 17, 679), the element measure, the
 // hourglass base vectors and the characteristic length for the time step.
 // Shape<2> is the 4-node quadrilateral, Shape<3> the 8-node hexahedron.
-// Coordinates come as x[i][a]: component i of node a.
-#include <algorithm>
-#include <cmath>
+// Coordinates come as x[i][a]: component i of node a; T is double for one
+// element or a Pack of elements (element_pack.hpp), with the same arithmetic.
 #include <utility>
+
+#include "fem/element_pack.hpp"
 
 namespace camouflet {
 
@@ -22,11 +23,12 @@ struct Shape<2> {
 
   // b[i][a] = dN_a/dx_i at the centre, which for the bilinear quad equals the
   // area average (FB 1981, eq. 15); returns the area (m^2).
-  static double gradients(const double (&x)[2][4], double (&b)[2][4]) {
-    const double x13 = x[0][2] - x[0][0], x24 = x[0][3] - x[0][1];
-    const double y13 = x[1][2] - x[1][0], y24 = x[1][3] - x[1][1];
-    const double area = 0.5 * (x13 * y24 - x24 * y13);
-    const double s = 0.5 / area;
+  template <class T>
+  static T gradients(const T (&x)[2][4], T (&b)[2][4]) {
+    const T x13 = x[0][2] - x[0][0], x24 = x[0][3] - x[0][1];
+    const T y13 = x[1][2] - x[1][0], y24 = x[1][3] - x[1][1];
+    const T area = 0.5 * (x13 * y24 - x24 * y13);
+    const T s = 0.5 / area;
     b[0][0] = -y24 * s;
     b[0][1] = y13 * s;
     b[0][2] = y24 * s;
@@ -39,19 +41,21 @@ struct Shape<2> {
   }
 
   // Area (m^2) alone.
-  static double measure(const double (&x)[2][4]) {
+  template <class T>
+  static T measure(const T (&x)[2][4]) {
     return 0.5 * ((x[0][2] - x[0][0]) * (x[1][3] - x[1][1]) - (x[0][3] - x[0][1]) * (x[1][2] - x[1][0]));
   }
 
   // Area / longest side: the shortest crossing distance of the element.
-  static double length(const double (&x)[2][4], double area) {
-    double longest = 0.0;
+  template <class T>
+  static T length(const T (&x)[2][4], const T& area) {
+    T longest{};
     for (int a = 0; a < 4; ++a) {
       const int c = (a + 1) % 4;
-      const double dx = x[0][c] - x[0][a], dy = x[1][c] - x[1][a];
-      longest = std::max(longest, dx * dx + dy * dy);
+      const T dx = x[0][c] - x[0][a], dy = x[1][c] - x[1][a];
+      longest = max_of(longest, dx * dx + dy * dy);
     }
-    return area / std::sqrt(longest);
+    return area / sqrt_of(longest);
   }
 };
 
@@ -74,8 +78,8 @@ struct Shape<3> {
   // One row of FB 1981 eq. (79): dV/dx_a for node A from the other two
   // coordinate components (y, z) -> x, via node A's permutation. A is a
   // template argument so that every index folds to a constant.
-  template <int A>
-  static double volume_derivative(const double* y, const double* z) {
+  template <int A, class T>
+  static T volume_derivative(const T* y, const T* z) {
     constexpr const int* p = permutation[A];
     const auto Y = [&](int k) { return y[p[k - 1]]; };
     const auto Z = [&](int k) { return z[p[k - 1]]; };
@@ -85,50 +89,55 @@ struct Shape<3> {
            12.0;
   }
 
-  template <std::size_t... A>
-  static void volume_derivatives(const double (&x)[3][8], double (&b)[3][8], std::index_sequence<A...>) {
+  template <class T, std::size_t... A>
+  static void volume_derivatives(const T (&x)[3][8], T (&b)[3][8], std::index_sequence<A...>) {
     ((b[0][A] = volume_derivative<A>(x[1], x[2]), b[1][A] = volume_derivative<A>(x[2], x[0]),
       b[2][A] = volume_derivative<A>(x[0], x[1])),
      ...);
   }
 
-  template <std::size_t... A>
-  static double volume_only(const double (&x)[3][8], std::index_sequence<A...>) {
+  template <class T, std::size_t... A>
+  static T volume_only(const T (&x)[3][8], std::index_sequence<A...>) {
     return ((x[0][A] * volume_derivative<A>(x[1], x[2])) + ...);
   }
 
   // b[i][a] = (1/V) dV/dx_ia, the uniform-strain gradient vectors that make
   // the one-point hexahedron pass the patch test (FB 1981, eqs. 16, 79);
   // returns the exact trilinear volume (m^3).
-  static double gradients(const double (&x)[3][8], double (&b)[3][8]) {
+  template <class T>
+  static T gradients(const T (&x)[3][8], T (&b)[3][8]) {
     volume_derivatives(x, b, std::make_index_sequence<8>{});
-    double volume = 0.0;
+    T volume{};
     for (int a = 0; a < 8; ++a) volume += x[0][a] * b[0][a];
-    const double s = 1.0 / volume;
+    const T s = 1.0 / volume;
     for (int i = 0; i < 3; ++i)
       for (int a = 0; a < 8; ++a) b[i][a] *= s;
     return volume;
   }
 
   // Exact volume (m^3) alone: sum_a x_a dV/dx_a, a third of the work of gradients().
-  static double measure(const double (&x)[3][8]) { return volume_only(x, std::make_index_sequence<8>{}); }
+  template <class T>
+  static T measure(const T (&x)[3][8]) {
+    return volume_only(x, std::make_index_sequence<8>{});
+  }
 
   // Volume / largest face area: the shortest crossing distance of the element.
-  static double length(const double (&x)[3][8], double volume) {
+  template <class T>
+  static T length(const T (&x)[3][8], const T& volume) {
     static constexpr int face[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    double largest = 0.0;
+    T largest{};
     for (const auto& f : face) {
-      double d1[3], d2[3];
+      T d1[3], d2[3];
       for (int i = 0; i < 3; ++i) {
         d1[i] = x[i][f[2]] - x[i][f[0]];
         d2[i] = x[i][f[3]] - x[i][f[1]];
       }
-      const double n0 = d1[1] * d2[2] - d1[2] * d2[1], n1 = d1[2] * d2[0] - d1[0] * d2[2],
-                   n2 = d1[0] * d2[1] - d1[1] * d2[0];
-      largest = std::max(largest, n0 * n0 + n1 * n1 + n2 * n2);
+      const T n0 = d1[1] * d2[2] - d1[2] * d2[1], n1 = d1[2] * d2[0] - d1[0] * d2[2],
+              n2 = d1[0] * d2[1] - d1[1] * d2[0];
+      largest = max_of(largest, n0 * n0 + n1 * n1 + n2 * n2);
     }
-    return volume / (0.5 * std::sqrt(largest));
+    return volume / (0.5 * sqrt_of(largest));
   }
 };
 

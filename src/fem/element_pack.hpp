@@ -1,0 +1,46 @@
+#pragma once
+// Elements are processed in packs of `pack_width`: lane l of a Pack holds the
+// value of element e0 + l, so the element formulas (shape.hpp) run on whole
+// SIMD registers without the compiler having to discover the vectorisation.
+// The width follows the target (-march; CMake option CAMOUFLET_NATIVE builds
+// src/fem for this CPU): 8 doubles with AVX-512, 4 with AVX, 2 with SSE2.
+// pack_width has internal linkage, so translation units built for different
+// targets (the fem layer, tests including shape.hpp) each see their own.
+// GCC/Clang vector extension; arithmetic with a scalar broadcasts it.
+// docs/performance.md.
+#include <cmath>
+
+namespace camouflet {
+
+#if defined(__AVX512F__)
+constexpr int pack_width = 8;
+#elif defined(__AVX__)
+constexpr int pack_width = 4;
+#else
+constexpr int pack_width = 2;
+#endif
+
+using Pack = double __attribute__((vector_size(pack_width * sizeof(double))));
+
+inline Pack broadcast(double s) {
+  return Pack{} + s;
+}
+
+// Lane-wise max and square root; the double overloads let shape.hpp's
+// formulas serve single elements and packs alike.
+inline double max_of(double a, double b) {
+  return a < b ? b : a;
+}  // as std::max
+inline double sqrt_of(double a) {
+  return std::sqrt(a);
+}
+inline Pack max_of(Pack a, const Pack& b) {
+  for (int l = 0; l < pack_width; ++l) a[l] = a[l] < b[l] ? b[l] : a[l];
+  return a;
+}
+inline Pack sqrt_of(Pack a) {
+  for (int l = 0; l < pack_width; ++l) a[l] = std::sqrt(a[l]);
+  return a;
+}
+
+}  // namespace camouflet

@@ -60,6 +60,9 @@ void Solver<D>::visit_state(StateVisitor& v) {
     visit(v, "speed", e.speed);
     visit(v, "hourglass_displacement", e.hourglass_displacement);
     visit(v, "eroded", e.eroded);
+    // Geometric-strain erosion sums D dt over the run (empty when no material
+    // erodes by it): without it a restarted run erodes later than the original.
+    visit(v, "total_strain", total_strain_);
   }
   for (std::size_t m = 0; m < batches_.size(); ++m) {
     StateScope batch(v, "batch" + std::to_string(m));

@@ -39,6 +39,15 @@ void wait_for_start(const fs::path& out) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
 }
 
+// Odd trials wait for the first checkpoint before their random delay, so at
+// least half the kills hit a run that has one, however slow the build (an
+// instrumented build starts too slowly for a fixed delay to reach it).
+void wait_for_checkpoint(const fs::path& out) {
+  const auto limit = clock_type::now() + std::chrono::seconds(60);
+  while (list_checkpoints(out / "checkpoints").empty() && clock_type::now() < limit)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+}
+
 pid_t start_run(const fs::path& case_file, const fs::path& out) {
   const pid_t pid = fork();
   if (pid == 0) {
@@ -79,6 +88,7 @@ TEST(KillSafety, SigkillAtRandomMomentsLeavesReadableCheckpointAndCompleteRows) 
     const fs::path out = root / ("trial" + std::to_string(trial));
     const pid_t pid = start_run(case_file, out);
     wait_for_start(out);
+    if (trial % 2 == 1) wait_for_checkpoint(out);
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(random)));
     kill(pid, SIGKILL);
     int status = 0;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "solver/run.hpp"
 
 namespace camouflet::test {
 
@@ -85,6 +86,44 @@ inline void expect_same_final_state(const std::filesystem::path& a, const std::f
   }
   EXPECT_EQ(da.arrays.size(), db.arrays.size());
   EXPECT_GT(compared, 50u);
+}
+
+// A model built in code (no case file): `make(max_cycles)` gives the model
+// stopped after that many cycles. Runs it to the end in <root>/full, then to
+// half its cycles in <root>/split and on from that checkpoint, and expects
+// the gauge CSV `gauge_csv` and every final state array bit-identical (one
+// thread). The models must enable checkpoints (a final one is written).
+// Returns the cycles of the uninterrupted run.
+template <class MakeModel>
+std::int64_t expect_split_run_bit_identical(const std::filesystem::path& root, MakeModel make,
+                                            const std::string& gauge_csv) {
+  std::filesystem::remove_all(root);
+  RunOptions o;
+  o.progress = ProgressStyle::none;
+  o.threads = 1;
+  o.output_dir = root / "full";
+  const auto full = make(std::numeric_limits<std::int64_t>::max());
+  const RunSummary reference = run_model(full, o);
+  const std::int64_t half = reference.cycles / 2;
+  o.output_dir = root / "split";
+  const auto first = make(half);
+  EXPECT_EQ(run_model(first, o).cycles, half);
+  o.restart = "latest";
+  const RunSummary second = run_model(full, o);
+  EXPECT_EQ(second.cycles, reference.cycles);
+  EXPECT_EQ(second.time, reference.time);
+  const std::string a = read_text(root / "full" / gauge_csv), b = read_text(root / "split" / gauge_csv);
+  EXPECT_FALSE(a.empty()) << gauge_csv;
+  EXPECT_EQ(a, b) << gauge_csv << " differs after the restart";
+  expect_same_final_state(root / "full", root / "split");
+  return reference.cycles;
+}
+
+// One array of a checkpoint file (empty when it has none by that name).
+inline StateArray checkpoint_array(const std::filesystem::path& file, const std::string& name) {
+  const CheckpointData data = read_checkpoint(file);
+  const auto it = data.arrays.find(name);
+  return it == data.arrays.end() ? StateArray{} : it->second;
 }
 
 }  // namespace camouflet::test

@@ -11,8 +11,12 @@
 //   scatter), and the only reductions feeding back into the state are minima
 //   (time step), which are exact; the histories are expected to be
 //   bit-identical, and the test checks that exactly.
+// * Joined model (SPH zone inside a FEM column, coupling/joined_zone.hpp):
+//   FEM forces as above, SPH sums gathered, the join's reactions added in one
+//   serial loop: within 1e-12 relative.
 // The models are the benchmark's standard problems (bench/bench_problems.hpp)
-// at a small size, above the parallel thresholds of fem/parallel.hpp.
+// at a small size, above the parallel thresholds of fem/parallel.hpp, and a
+// joined column of 2560 elements and 1280 particles.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -22,7 +26,10 @@
 #include <vector>
 
 #include "../../bench/bench_problems.hpp"
+#include "common/fem_models.hpp"
 #include "common/verification.hpp"
+#include "coupling/joined_zone.hpp"
+#include "fem/parallel.hpp"
 #include "solver/solver.hpp"
 #include "sph/sph_system.hpp"
 
@@ -85,6 +92,63 @@ std::vector<double> sph_history(int threads, int cycles) {
   return history;
 }
 
+// A plane-strain column 0.6 m x 0.04 m of 2.5 mm quads whose part [0.1, 0.3]
+// m is an SPH zone joined to the FEM (2560 elements > parallel_threshold, 1280
+// particles); the zone starts at 1 m/s, loading both joins at once. Gauges:
+// node velocities on both sides of each join, particle velocity and pressure,
+// every cycle.
+std::vector<double> join_history(int threads, int cycles) {
+  omp_set_num_threads(threads);
+  const test::ElasticConstants c;
+  Model model =
+      test::block_model(GeometryMode::plane_strain, {{"bar", 0, {0, 0, 0}, {0.6, 0.04, 0}, {240, 16, 1}}}, c);
+  Part zone;
+  zone.name = "zone";
+  zone.kind = PartKind::sph;
+  zone.material = 0;
+  zone.initial_velocity = {1.0, 0.0, 0.0};
+  model.parts.push_back(zone);
+  ParticleFillSpec fill;
+  fill.part = 1;
+  fill.spacing = 2.5e-3;
+  fill.region.min = {0.1, 0.0, 0.0};
+  fill.region.max = {0.3, 0.04, 0.0};
+  make_joined_zone(model, fill);
+  model.boundaries.push_back(test::symmetry("bar.ymin", {0, 1, 0}));
+  model.boundaries.push_back(test::symmetry("bar.ymax", {0, 1, 0}));
+  model.run.end_time = 1.0;
+  Solver<2> solver(model);
+  EXPECT_GT(solver.elements().size(), static_cast<std::size_t>(parallel_threshold));
+  auto nearest_node = [&](double x, double y) {
+    std::size_t best = 0;
+    double best_d = 1e300;
+    for (std::size_t n = 0; n < solver.node_count(); ++n) {
+      if (solver.node_mass()[n] <= 0.0) continue;
+      const double d = std::hypot(solver.position()[2 * n] - x, solver.position()[2 * n + 1] - y);
+      if (d < best_d) best_d = d, best = n;
+    }
+    return best;
+  };
+  std::vector<std::size_t> nodes;
+  for (double x : {0.09, 0.1, 0.3, 0.31}) nodes.push_back(nearest_node(x, 0.02));
+  std::vector<double> history;
+  for (int k = 0; k < cycles; ++k) {
+    solver.step();
+    for (std::size_t n : nodes) {
+      history.push_back(solver.velocity()[2 * n]);
+      history.push_back(solver.velocity()[2 * n + 1]);
+    }
+    const auto& pa = solver.particles()->particles();
+    for (std::size_t g = 0; g < 8; ++g) {
+      const std::size_t i = g * pa.real / 8;
+      history.push_back(pa.velocity[i][0]);
+      history.push_back(pa.pressure[i]);
+    }
+    history.push_back(solver.time());
+  }
+  return history;
+}
+
 }  // namespace
 
 TEST(ThreadConsistency, FemHexImpactOneVersusTwoThreads) {
@@ -109,4 +173,15 @@ TEST(ThreadConsistency, SphTaylorBarOneVersusTwoThreadsBitIdentical) {
   test::verify(
       {"Thread consistency, SPH Taylor bar ~2000 particles, 20 steps: gauge histories 1 vs 2 threads",
        "bit-identical (gather-only sums)", 0.0, diff, 1e-12, false, ""});
+}
+
+TEST(ThreadConsistency, JoinedSphZoneOneVersusTwoThreads) {
+  const std::vector<double> one = join_history(1, 20);
+  const std::vector<double> two = join_history(2, 20);
+  const double diff = relative_difference(one, two);
+  std::printf("joined SPH zone: 1 vs 2 threads, max relative difference %.3e\n", diff);
+  test::verify(
+      {"Thread consistency, joined SPH zone in a FEM column (2560 quads, 1280 particles), 20 cycles: "
+       "gauge histories 1 vs 2 threads",
+       "identical to round-off", 0.0, diff, 1e-12, false, ""});
 }

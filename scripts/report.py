@@ -9,13 +9,10 @@ OUTDIR/report/. Uses only the Python standard library, NumPy and matplotlib
 Computers and Structures 83 (2005) 339-356.
 """
 import argparse
-import csv
 import html
 import json
 import math
 import os
-import re
-import subprocess
 import sys
 
 import matplotlib
@@ -24,35 +21,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-G = 9.80665  # m/s^2 per g
-F_COUPLING = 0.6  # the paper's coupling factor (section 5.3)
-
-
-def read_csv(path):
-    """Gauge CSV -> (time array, {column: array})."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header, data = rows[0], np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
-    if data.size == 0:
-        data = np.zeros((0, len(header)))
-    cols = {name: data[:, k] for k, name in enumerate(header)}
-    return cols["time_s"], cols
-
-
-def generator_parameters(case_path):
-    """The `# generator:` line that `camouflet generate` writes into the case header."""
-    params = {}
-    try:
-        with open(case_path) as f:
-            for line in f:
-                m = re.match(r"#\s*generator:\s*(.*)", line)
-                if m:
-                    for item in m.group(1).split():
-                        key, _, value = item.partition("=")
-                        params[key] = float(value)
-    except OSError:
-        pass
-    return params
+# The headline quantities have one definition, shared with `camouflet sweep`.
+from run_metrics import (F_COUPLING, G, crater, deflections, empirical_averages, empirical_range,  # noqa: E402
+                         final_displacements, generator_parameters, in_structure_peaks, read_csv,
+                         structure_damage)
 
 
 def rebar_gauges(case_path):
@@ -93,20 +65,6 @@ def speed(cols, g):
 def tm5_functions(Z):
     """TM 5-855-1 as used by the paper, eqs. (38)-(39): MPa."""
     return F_COUPLING * 15.0 * Z ** -2.5, F_COUPLING * 22.0 * Z ** -2.0
-
-
-def empirical_averages(camouflet, W, r1, r2):
-    """In-structure averages from `camouflet empirical --csv` (rows by attenuation n)."""
-    if not camouflet:
-        return []
-    try:
-        text = subprocess.run(
-            [camouflet, "empirical", "--charge-mass", str(W), "--coupling", str(F_COUPLING), "--span", str(r1), str(r2),
-             "--csv"], check=True, capture_output=True, text=True).stdout
-    except (OSError, subprocess.CalledProcessError) as e:
-        print(f"report: camouflet empirical failed: {e}", file=sys.stderr)
-        return []
-    return [r for r in csv.DictReader(text.splitlines()) if r["section"] == "in_structure"]
 
 
 def save(fig, outdir, name):
@@ -234,8 +192,7 @@ def main():
                 axes[0].plot(ms, c[g + ".displacement_y"] * 1e3, "--", label=f"{g} vertical")
             axes[0].set_ylabel("displacement [mm]")
             axes[0].set_title("front wall (targets 1–3)")
-            wall = c["t2.displacement_x"] - 0.5 * (c["t1.displacement_x"] + c["t3.displacement_x"])
-            floor = c["t5.displacement_y"] - 0.5 * (c["t3.displacement_y"] + c["t6.displacement_y"])
+            wall, floor = deflections(c)
             axes[1].plot(ms, wall * 1e3, label="front wall (horizontal, t2 vs t1/t3)")
             axes[1].plot(ms, floor * 1e3, label="floor (vertical, t5 vs t3/t6)")
             axes[1].set_ylabel("deflection [mm]")
@@ -252,20 +209,14 @@ def main():
         # Figs. 15-16: velocity and acceleration of the front wall and the floor.
         sets = (("front wall", ("t1", "t2", "t3"), "x", "horizontal", "fig15_front_wall.png", "Fig. 15"),
                 ("floor", ("t3", "t4", "t5"), "y", "vertical", "fig16_floor.png", "Fig. 16"))
-        measured = {}
+        measured = in_structure_peaks(c)
         for title, gs, axis, word, fname, ref in sets:
-            if not all(has(g) for g in gs):
+            if title not in measured:
                 continue
             fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-            vmax = amax = 0.0
             for g in gs:
-                v = c[f"{g}.velocity_{axis}"]
-                a = c[f"{g}.acceleration_{axis}"] / G
-                axes[0].plot(ms, v, label=g)
-                axes[1].plot(ms, a, label=g, lw=0.8)
-                vmax = max(vmax, float(np.nanmax(np.abs(v))) if len(v) else 0.0)
-                amax = max(amax, float(np.nanmax(np.abs(a))) if len(a) else 0.0)
-            measured[title] = (vmax, amax, word)
+                axes[0].plot(ms, c[f"{g}.velocity_{axis}"], label=g)
+                axes[1].plot(ms, c[f"{g}.acceleration_{axis}"] / G, label=g, lw=0.8)
             axes[0].set_ylabel(f"{word} velocity [m/s]")
             axes[1].set_ylabel(f"{word} acceleration [g]")
             for ax in axes:
@@ -276,10 +227,7 @@ def main():
         avg = empirical_averages(args.camouflet, W, standoff, standoff + length)
         if measured:
             rows = []
-            v_lo = min((float(r["velocity_m_per_s"]) for r in avg), default=float("nan"))
-            v_hi = max((float(r["velocity_m_per_s"]) for r in avg), default=float("nan"))
-            a_lo = min((float(r["acceleration_g"]) for r in avg), default=float("nan"))
-            a_hi = max((float(r["acceleration_g"]) for r in avg), default=float("nan"))
+            v_lo, v_hi, a_lo, a_hi = empirical_range(avg)
             for title, (vmax, amax, word) in measured.items():
                 ok = 0.5 * v_lo <= vmax <= 2.0 * v_hi
                 rows.append(f"<tr><td>{title} ({word})</td><td>{vmax:.3g}</td><td>{v_lo:.3g} – {v_hi:.3g}</td>"
@@ -292,6 +240,23 @@ def main():
                 "<table><tr><th>where</th><th>peak velocity [m/s]</th><th>TM-5 V<sub>avg</sub> [m/s]</th>"
                 "<th>within criterion</th><th>peak acceleration [g]</th><th>TM-5 a<sub>avg</sub> [g]</th></tr>" +
                 "".join(rows) + "</table>")
+
+    # Permanent displacements, damage of the box (Fig. 14's numbers) and the apparent crater (run_metrics.py).
+    rows = []
+    if os.path.exists(spath):
+        for title, u in final_displacements(read_csv(spath)[1]).items():
+            rows.append(f"<tr><td>{title}: largest displacement at the end of the run</td><td>{u * 1e3:.3g} mm</td></tr>")
+    dmg = structure_damage(out, gen)
+    if dmg:
+        rows.append(f"<tr><td>largest damage in the box</td><td>{dmg['max']:.3g} ({dmg['member']})</td></tr>")
+        rows += [f"<tr><td>mean damage, {m}</td><td>{v:.3g}</td></tr>" for m, v in sorted(dmg["mean"].items())]
+    cr = crater(out, gen)
+    if cr:
+        rows.append(f"<tr><td>apparent crater radius / depth</td><td>{cr[0]:.3g} m / {cr[1]:.3g} m</td></tr>")
+    if rows:
+        tables.append("<h2>Permanent displacement, damage and crater</h2><p>At the last snapshot; definitions in "
+                      "<code>scripts/run_metrics.py</code> (docs/buried-structure.md).</p><table>" + "".join(rows) +
+                      "</table>")
 
     # Fig. 13: rebar strain at the rebar gauges In-1..3 / Out-1..3 (bars.csv; the case header names the segments).
     bpath = os.path.join(out, "bars.csv")

@@ -1,0 +1,325 @@
+"""The headline results of a buried-structure run, from its output folder.
+
+One definition of each quantity, shared by `camouflet report`
+(scripts/report.py) and `camouflet sweep` (scripts/sweep.py):
+in-structure peak velocity and acceleration (Figs. 15-16), wall and floor
+deflections (Fig. 12) and final displacements, structural damage (Fig. 14),
+the apparent crater and the energy balance; and the TM 5-855-1 in-structure
+averages from `camouflet empirical --csv`. Standard library and NumPy only.
+docs/buried-structure.md ("The report", "Parameter studies") states the
+definitions.
+"""
+import csv
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+
+G = 9.80665  # m/s^2 per g
+F_COUPLING = 0.6  # the paper's coupling factor (section 5.3)
+
+# (title, targets, axis, word): the front wall moves horizontally (targets 1-3),
+# the floor vertically (targets 3-5), as the paper's Figs. 15 and 16.
+STRUCTURE_SETS = (("front wall", ("t1", "t2", "t3"), "x", "horizontal"),
+                  ("floor", ("t3", "t4", "t5"), "y", "vertical"))
+
+
+def read_csv(path):
+    """Gauge CSV -> (time array, {column: array})."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, data = rows[0], np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
+    if data.size == 0:
+        data = np.zeros((0, len(header)))
+    cols = {name: data[:, k] for k, name in enumerate(header)}
+    return cols["time_s"], cols
+
+
+def generator_parameters(case_path):
+    """The `# generator:` line that `camouflet generate` writes into the case header."""
+    params = {}
+    try:
+        with open(case_path) as f:
+            for line in f:
+                m = re.match(r"#\s*generator:\s*(.*)", line)
+                if m:
+                    for item in m.group(1).split():
+                        key, _, value = item.partition("=")
+                        params[key] = float(value)
+    except OSError:
+        pass
+    return params
+
+
+def empirical_averages(camouflet, W, r1, r2):
+    """In-structure averages from `camouflet empirical --csv` (rows by attenuation n)."""
+    if not camouflet:
+        return []
+    try:
+        text = subprocess.run(
+            [camouflet, "empirical", "--charge-mass", str(W), "--coupling", str(F_COUPLING), "--span", str(r1), str(r2),
+             "--csv"], check=True, capture_output=True, text=True).stdout
+    except (OSError, subprocess.CalledProcessError) as e:
+        print(f"camouflet empirical failed: {e}", file=sys.stderr)
+        return []
+    return [r for r in csv.DictReader(text.splitlines()) if r["section"] == "in_structure"]
+
+
+def empirical_range(avg):
+    """(V low, V high [m/s], a low, a high [g]) over the attenuation rows; NaN when unknown."""
+    v = [float(r["velocity_m_per_s"]) for r in avg]
+    a = [float(r["acceleration_g"]) for r in avg]
+    nan = float("nan")
+    return (min(v, default=nan), max(v, default=nan), min(a, default=nan), max(a, default=nan))
+
+
+def _peak(values):
+    return float(np.nanmax(np.abs(values))) if len(values) else 0.0
+
+
+def in_structure_peaks(cols):
+    """{title: (peak |velocity| [m/s], peak |acceleration| [g], word)} of the front wall and the floor:
+    the largest over the set's targets of the raw gauge values (not filtered)."""
+    out = {}
+    for title, targets, axis, word in STRUCTURE_SETS:
+        if not all(f"{g}.velocity_{axis}" in cols for g in targets):
+            continue
+        vmax = max(_peak(cols[f"{g}.velocity_{axis}"]) for g in targets)
+        amax = max(_peak(cols[f"{g}.acceleration_{axis}"] / G) for g in targets)
+        out[title] = (vmax, amax, word)
+    return out
+
+
+def deflections(cols):
+    """(front wall, floor) deflection histories [m], or None: the mid-point against the mean of the ends,
+    front wall horizontal (t2 against t1/t3), floor vertical (t5 against t3/t6)."""
+    if not all(g + ".displacement_x" in cols for g in ("t1", "t2", "t3", "t5", "t6")):
+        return None
+    wall = cols["t2.displacement_x"] - 0.5 * (cols["t1.displacement_x"] + cols["t3.displacement_x"])
+    floor = cols["t5.displacement_y"] - 0.5 * (cols["t3.displacement_y"] + cols["t6.displacement_y"])
+    return wall, floor
+
+
+def final_displacements(cols):
+    """{title: largest |displacement| at the last sample [m]} over each set's targets along its axis
+    (the permanent displacement when the run has ended after the structure came to rest)."""
+    out = {}
+    for title, targets, axis, _ in STRUCTURE_SETS:
+        series = [cols.get(f"{g}.displacement_{axis}") for g in targets]
+        if all(s is not None and len(s) for s in series):
+            out[title] = max(abs(float(s[-1])) for s in series)
+    return out
+
+
+def read_vtu(path):
+    """ASCII VTK UnstructuredGrid -> (points (n, 3), connectivity per cell, {name: array})."""
+    root = ET.parse(path).getroot()
+    piece = root.find("UnstructuredGrid/Piece")
+
+    def array(node):
+        values = np.array(node.text.split(), dtype=float) if node.text and node.text.strip() else np.zeros(0)
+        k = int(node.get("NumberOfComponents", "1"))
+        return values.reshape(-1, k) if k > 1 else values
+
+    points = array(piece.find("Points/DataArray"))
+    cells = {a.get("Name"): a for a in piece.find("Cells")}
+    conn = array(cells["connectivity"]).astype(int)
+    offsets = array(cells["offsets"]).astype(int)
+    starts = np.concatenate(([0], offsets[:-1]))
+    fields = {}
+    for group in ("PointData", "CellData"):
+        node = piece.find(group)
+        if node is not None:
+            for a in node:
+                fields[a.get("Name")] = array(a)
+    return points, [conn[s:e] for s, e in zip(starts, offsets)], fields
+
+
+def last_snapshots(outdir):
+    """{part: file} of the last snapshot in fields.pvd (part 0 mesh, 1 particles) and its time."""
+    try:
+        root = ET.parse(os.path.join(outdir, "fields.pvd")).getroot()
+    except (OSError, ET.ParseError):
+        return {}, None
+    sets = [(float(d.get("timestep")), int(d.get("part", "0")), d.get("file")) for d in root.iter("DataSet")]
+    if not sets:
+        return {}, None
+    t = max(s[0] for s in sets)
+    return {part: os.path.join(outdir, f) for time, part, f in sets if time == t}, t
+
+
+def _box(gen):
+    """The box outline (r1, r2, z_bottom, z_top) and wall thickness from the generator line, or None."""
+    if "standoff_m" not in gen:
+        return None
+    r1 = gen["standoff_m"]
+    top = -gen.get("top_depth_m", 0.0)
+    return r1, r1 + gen["box_length_m"], top - gen["box_height_m"], top, gen["wall_thickness_m"]
+
+
+def _member(r, z, box):
+    """The structural member of a point of the box (reference position); walls take the corners."""
+    r1, r2, zb, zt, t = box
+    if r < r1 + t:
+        return "front wall"
+    if r > r2 - t:
+        return "back wall"
+    return "roof" if z > zt - t else "floor"
+
+
+def _reference_snapshot(outdir):
+    """Mesh and particle data of the last snapshot with reference (initial) positions x - u."""
+    files, t = last_snapshots(outdir)
+    out = {}
+    for part, path in files.items():
+        pts, conn, f = read_vtu(path)
+        u = f.get("displacement", np.zeros_like(pts))
+        ref = pts[:, :2] - u[:, :2]
+        out[part] = (pts[:, :2], ref, conn, f)
+    return out, t
+
+
+def structure_damage(outdir, gen):
+    """Damage of the box's elements at the last snapshot: {max, member of the max, mean per member},
+    or {} when the run wrote no mesh snapshot. Members by reference position (_member)."""
+    box = _box(gen)
+    snap, _ = _reference_snapshot(outdir)
+    if box is None or 0 not in snap or "damage" not in snap[0][3]:
+        return {}
+    _, ref, conn, f = snap[0]
+    r1, r2, zb, zt, _ = box
+    members = {}
+    best = (-1.0, "")
+    for c, d in zip(conn, f["damage"]):
+        r, z = ref[c].mean(axis=0)
+        if r1 < r < r2 and zb < z < zt:  # the box interior has no elements: inside the outline is concrete
+            m = _member(r, z, box)
+            members.setdefault(m, []).append(d)
+            if d > best[0]:
+                best = (float(d), m)
+    if not members:
+        return {}
+    return {"max": best[0], "member": best[1], "mean": {m: float(np.mean(v)) for m, v in members.items()}}
+
+
+def crater(outdir, gen):
+    """Apparent crater (radius, depth) [m] at the last snapshot, or None.
+
+    The ground is the soil (every element and particle except the explosive and the box) that has not
+    been thrown out: a point above the original surface z = 0 that moved more than one layer spacing
+    dz is ejecta. In radial bins of width dz the ground's top is the highest such point; its
+    depression is the bin's reference top (the same points at t = 0) minus its current top. The crater
+    is the run of bins from the axis whose depression exceeds dz / 2 (empty bins skipped): its outer edge is the apparent
+    radius, its largest depression the apparent depth. dz is the spacing of the two top layers of
+    points near the axis. No gravity, no fallback: material still rising inside the bowl counts as
+    ground."""
+    box = _box(gen)
+    d = gen.get("burst_depth_m")
+    snap, _ = _reference_snapshot(outdir)
+    if box is None or d is None or not snap:
+        return None
+    r1, r2, zb, zt, _ = box
+    # The explosive: the material of the element or particle nearest to the charge centre (0, -d) at t = 0.
+    candidates = []
+    for part, (x, ref, conn, f) in snap.items():
+        centres = np.array([ref[c].mean(axis=0) for c in conn]) if part == 0 else ref
+        if len(centres):
+            k = int(np.argmin(np.hypot(centres[:, 0], centres[:, 1] + d)))
+            candidates.append((float(np.hypot(*(centres[k] - (0.0, -d)))), int(f["material"][k])))
+    if not candidates:
+        return None
+    explosive = min(candidates)[1]
+    cur, ref0 = [], []
+    for part, (x, ref, conn, f) in snap.items():
+        mat = f["material"].astype(int)
+        if part == 0:
+            keep = set()
+            for c, m in zip(conn, mat):
+                r, z = ref[c].mean(axis=0)
+                if m != explosive and not (r1 < r < r2 and zb < z < zt):
+                    keep.update(int(i) for i in c)
+            idx = np.array(sorted(keep), dtype=int)
+        else:
+            idx = np.nonzero(mat != explosive)[0]
+        cur.append(x[idx])
+        ref0.append(ref[idx])
+    cur, ref0 = np.concatenate(cur), np.concatenate(ref0)
+    near = ref0[ref0[:, 0] < max(d, 1e-9)]
+    levels = np.unique(np.round(near[:, 1], 6))[::-1]  # to the micrometre: x - u carries round-off
+    if len(levels) < 2:
+        return None
+    dz = float(levels[0] - levels[1])
+    moved = np.hypot(*(cur - ref0).T)
+    ground = ~((cur[:, 1] > 0.0) & (moved > dz))
+    nbins = int(math.ceil(r1 / dz))
+    ref_top = np.full(nbins, -np.inf)
+    cur_top = np.full(nbins, -np.inf)
+    b0 = np.floor(ref0[:, 0] / dz).astype(int)
+    b1 = np.floor(cur[:, 0] / dz).astype(int)
+    for b, z in zip(b0, ref0[:, 1]):
+        if 0 <= b < nbins:
+            ref_top[b] = max(ref_top[b], z)
+    for b, z, g in zip(b1, cur[:, 1], ground):
+        if g and 0 <= b < nbins:
+            cur_top[b] = max(cur_top[b], z)
+    radius = depth = 0.0
+    for b in range(nbins):
+        if not (np.isfinite(ref_top[b]) and np.isfinite(cur_top[b])):
+            continue  # no points in this bin now or at t = 0 (coarse spacing): it neither makes nor ends the crater
+        drop = ref_top[b] - cur_top[b]
+        if drop <= 0.5 * dz:
+            break
+        radius = (b + 1) * dz
+        depth = max(depth, float(drop))
+    return radius, depth
+
+
+def run_metrics(outdir, camouflet=""):
+    """Flat {column: value} of a run's headline results (NaN where the output lacks them)."""
+    nan = float("nan")
+    m = {}
+    try:
+        with open(os.path.join(outdir, "summary.json")) as f:
+            summary = json.load(f)
+    except (OSError, ValueError):
+        summary = {}
+    e = summary.get("energy_J") or {}
+    m["final_time_s"] = summary.get("final_time_s", nan)
+    m["stop_reason"] = summary.get("stop_reason", "")
+    m["energy_error"] = e.get("relative_error") if e.get("relative_error") is not None else nan
+    gen = generator_parameters(os.path.join(outdir, "case.toml"))
+    peaks, defl, final = {}, None, {}
+    spath = os.path.join(outdir, "structure.csv")
+    if os.path.exists(spath):
+        _, cols = read_csv(spath)
+        peaks, defl, final = in_structure_peaks(cols), deflections(cols), final_displacements(cols)
+    for title, key in (("front wall", "front_wall"), ("floor", "floor")):
+        v, a, _ = peaks.get(title, (nan, nan, ""))
+        m[f"{key}_peak_velocity_m_s"] = v
+        m[f"{key}_peak_acceleration_g"] = a
+    m["front_wall_peak_deflection_mm"] = _peak(defl[0]) * 1e3 if defl else nan
+    m["floor_peak_deflection_mm"] = _peak(defl[1]) * 1e3 if defl else nan
+    m["front_wall_final_displacement_mm"] = final.get("front wall", nan) * 1e3
+    m["floor_final_displacement_mm"] = final.get("floor", nan) * 1e3
+    dmg = structure_damage(outdir, gen)
+    m["max_damage"] = dmg.get("max", nan)
+    m["max_damage_member"] = dmg.get("member", "")
+    m["front_wall_mean_damage"] = dmg.get("mean", {}).get("front wall", nan)
+    others = [v for k, v in dmg.get("mean", {}).items() if k != "front wall"]
+    m["other_members_mean_damage"] = max(others) if others else nan
+    cr = crater(outdir, gen)
+    m["crater_radius_m"], m["crater_depth_m"] = cr if cr else (nan, nan)
+    if gen:
+        avg = empirical_averages(camouflet, gen["charge_mass_kg"], gen["standoff_m"],
+                                 gen["standoff_m"] + gen["box_length_m"])
+        (m["tm5_velocity_low_m_s"], m["tm5_velocity_high_m_s"], m["tm5_acceleration_low_g"],
+         m["tm5_acceleration_high_g"]) = empirical_range(avg)
+    else:
+        m["tm5_velocity_low_m_s"] = m["tm5_velocity_high_m_s"] = nan
+        m["tm5_acceleration_low_g"] = m["tm5_acceleration_high_g"] = nan
+    return m

@@ -259,8 +259,9 @@ def crater(outdir, gen):
     nbins = int(math.ceil(r1 / dz))
     ref_top = np.full(nbins, -np.inf)
     cur_top = np.full(nbins, -np.inf)
-    b0 = np.floor(ref0[:, 0] / dz).astype(int)
-    b1 = np.floor(cur[:, 0] / dz).astype(int)
+    # Points on a bin's inner edge (grid lines at multiples of dz) belong to it despite round-off.
+    b0 = np.floor(ref0[:, 0] / dz + 1e-6).astype(int)
+    b1 = np.floor(cur[:, 0] / dz + 1e-6).astype(int)
     for b, z in zip(b0, ref0[:, 1]):
         if 0 <= b < nbins:
             ref_top[b] = max(ref_top[b], z)

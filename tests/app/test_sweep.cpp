@@ -15,6 +15,7 @@
 
 #include "case/run_executable.hpp"
 #include "case/sweep_spec.hpp"
+#include "common/verification.hpp"
 #include "core/error.hpp"
 
 namespace camouflet {
@@ -221,6 +222,11 @@ TEST(SweepCommand, RunsEveryCaseAndRecordsTheRefusedOne) {
   EXPECT_GT(v_light, 0.0);
   // Twice the charge: a stronger ground shock at the wall.
   EXPECT_GT(v_heavy, 1.3 * v_light);
+  test::record_check(
+      "camouflet sweep of a tiny buried-structure case, 1 kg and 2 kg TNT at 0.5 m: front-wall peak "
+      "horizontal velocity",
+      "grows with the charge mass (more than 1.3x for twice the mass)",
+      std::to_string(v_light) + " -> " + std::to_string(v_heavy) + " m/s", v_heavy > 1.3 * v_light);
   for (const auto* row : {&light, &heavy}) {
     EXPECT_LT(std::stod(row->at("energy_error")), 0.1);
     EXPECT_GT(std::stod(row->at("tm5_velocity_high_m_s")), std::stod(row->at("tm5_velocity_low_m_s")));

@@ -1,0 +1,179 @@
+// The headline results that `camouflet report` and `camouflet sweep` share
+// (scripts/run_metrics.py, docs/buried-structure.md "Parameter studies"),
+// checked on a synthetic output folder whose answers are known by
+// construction: a soil grid with a paraboloid bowl pressed into it and soil
+// particles thrown above it (ejecta, which must not fill the crater), and a
+// box whose elements carry a prescribed damage.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "case/run_executable.hpp"
+#include "common/verification.hpp"
+
+namespace camouflet {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double dz = 0.05;                 // m, grid spacing
+constexpr double bowl_radius = 0.6;         // m
+constexpr double bowl_depth = 0.3;          // m
+constexpr double depth_of_burst = 0.3;      // m
+constexpr double r1 = 2.0, r2 = 3.0;        // m, the box's front and back faces
+constexpr double height = 0.5, wall = 0.1;  // m
+
+struct Grid {
+  std::vector<double> ref, u;  // node positions and displacements (x, y, 0)
+  std::vector<int> conn;
+  std::vector<double> damage;
+  std::vector<int> material;
+};
+
+// Soil r in [0, 3.5], z in [-1.5, 0]; the box's interior has no cells.
+Grid synthetic_grid() {
+  Grid g;
+  const int nr = 70, nz = 30;
+  for (int j = 0; j <= nz; ++j)
+    for (int i = 0; i <= nr; ++i) {
+      const double r = i * dz, z = -1.5 + j * dz;
+      g.ref.insert(g.ref.end(), {r, z, 0.0});
+      const double sink = r < bowl_radius ? bowl_depth * (1.0 - (r / bowl_radius) * (r / bowl_radius)) : 0.0;
+      g.u.insert(g.u.end(), {0.0, -sink, 0.0});
+    }
+  for (int j = 0; j < nz; ++j)
+    for (int i = 0; i < nr; ++i) {
+      const double rc = (i + 0.5) * dz, zc = -1.5 + (j + 0.5) * dz;
+      const bool in_box = rc > r1 && rc < r2 && zc > -height;
+      const bool interior = in_box && rc > r1 + wall && rc < r2 - wall && zc < -wall && zc > -height + wall;
+      if (interior) continue;
+      const int n0 = j * (nr + 1) + i;
+      g.conn.insert(g.conn.end(), {n0, n0 + 1, n0 + nr + 2, n0 + nr + 1});
+      int m = 0;  // soil
+      double d = 0.0;
+      if (std::hypot(rc, zc + depth_of_burst) < 0.1) m = 1;  // the charge
+      if (in_box) {
+        m = 2;
+        if (rc < r1 + wall)
+          d = zc > -0.25 ? 0.8 : 0.1;  // front wall: mean 0.45
+        else if (zc > -wall && rc < r2 - wall)
+          d = 0.05;  // roof
+      }
+      g.material.push_back(m);
+      g.damage.push_back(d);
+    }
+  return g;
+}
+
+template <class T>
+void array(std::ostream& o, const char* type, const char* name, int components, const std::vector<T>& v) {
+  o << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << components
+    << "\" format=\"ascii\">";
+  for (const T& x : v) o << x << ' ';
+  o << "</DataArray>\n";
+}
+
+void write_vtu(const fs::path& path, const std::vector<double>& x, const std::vector<double>& u,
+               const std::vector<int>& conn, int per_cell, const std::vector<double>& cell_damage,
+               const std::vector<int>& cell_material, bool point_fields) {
+  std::ofstream o(path);
+  const std::size_t n = x.size() / 3, m = conn.size() / per_cell;
+  o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\">\n<UnstructuredGrid>\n"
+    << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << m << "\">\n<PointData>\n";
+  array(o, "Float64", "displacement", 3, u);
+  if (point_fields) {
+    array(o, "Float64", "damage", 1, cell_damage);
+    array(o, "Int32", "material", 1, cell_material);
+  }
+  o << "</PointData>\n<CellData>\n";
+  if (!point_fields) {
+    array(o, "Float64", "damage", 1, cell_damage);
+    array(o, "Int32", "material", 1, cell_material);
+  }
+  o << "</CellData>\n<Points>\n";
+  array(o, "Float64", "position", 3, x);
+  o << "</Points>\n<Cells>\n";
+  std::vector<int> offsets, types;
+  for (std::size_t c = 0; c < m; ++c) {
+    offsets.push_back(static_cast<int>((c + 1) * per_cell));
+    types.push_back(per_cell == 4 ? 9 : 1);
+  }
+  array(o, "Int64", "connectivity", 1, conn);
+  array(o, "Int64", "offsets", 1, offsets);
+  array(o, "UInt8", "types", 1, types);
+  o << "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+}
+
+// run_metrics(folder) as {key: text}.
+std::map<std::string, std::string> metrics(const fs::path& dir) {
+  const std::string script = std::string(CAMOUFLET_SOURCE_DIR) + "/scripts";
+  const auto r = test::run_camouflet_raw("/usr/bin/python3 -c \"import sys; sys.path.insert(0, '" + script +
+                                         "'); import run_metrics as m\nfor k, v in m.run_metrics('" +
+                                         dir.string() + "').items(): print(k, v)\"");
+  EXPECT_EQ(r.status, 0) << r.output;
+  std::map<std::string, std::string> out;
+  std::istringstream in(r.output);
+  for (std::string key, value; in >> key && std::getline(in, value);) out[key] = value.substr(1);
+  return out;
+}
+
+TEST(RunMetrics, CraterAndDamageOfASyntheticOutput) {
+  if (test::run_camouflet_raw("/usr/bin/python3 -c 'import numpy'").status != 0)
+    GTEST_SKIP() << "python3-numpy is not installed";
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "run_metrics";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.toml") << "# generator: charge_mass_kg=1 burst_depth_m=" << depth_of_burst
+                                   << " standoff_m=" << r1 << " box_length_m=" << r2 - r1
+                                   << " box_height_m=" << height << " wall_thickness_m=" << wall
+                                   << " top_depth_m=0\n";
+  std::ofstream(dir / "summary.json") << "{\"final_time_s\": 0.01, \"stop_reason\": \"end time reached\", "
+                                         "\"energy_J\": {\"relative_error\": 0.012}}\n";
+  const Grid g = synthetic_grid();
+  std::vector<double> x(g.ref.size());
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] = g.ref[k] + g.u[k];
+  write_vtu(dir / "fields_0001.vtu", x, g.u, g.conn, 4, g.damage, g.material, false);
+  // Ejecta: soil particles from the bowl, now 1 m above it; and one soil particle in place far out.
+  std::vector<double> px, pu;
+  std::vector<int> pconn, pmat;
+  std::vector<double> pdamage;
+  for (int k = 0; k < 6; ++k) {
+    const double r = 0.025 + 0.1 * k;
+    px.insert(px.end(), {r, 1.0, 0.0});
+    pu.insert(pu.end(), {0.0, 1.05, 0.0});
+    pconn.push_back(k);
+    pmat.push_back(0);
+    pdamage.push_back(0.0);
+  }
+  write_vtu(dir / "particles_0001.vtu", px, pu, pconn, 1, pdamage, pmat, true);
+  std::ofstream(dir / "fields.pvd")
+      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+         "<DataSet timestep=\"0\" part=\"0\" file=\"missing_0000.vtu\"/>\n"
+         "<DataSet timestep=\"0.01\" part=\"0\" file=\"fields_0001.vtu\"/>\n"
+         "<DataSet timestep=\"0.01\" part=\"1\" file=\"particles_0001.vtu\"/>\n"
+         "</Collection>\n</VTKFile>\n";
+
+  const auto m = metrics(dir);
+  ASSERT_TRUE(m.count("crater_radius_m")) << "no output";
+  // The bowl's rim is resolved to one bin (dz); its depth exactly (the node on the axis).
+  test::verify({"Apparent crater of a synthetic paraboloid bowl with ejecta above it: radius",
+                "the bowl's radius (by construction), within one bin dz = 0.05 m", bowl_radius,
+                std::stod(m.at("crater_radius_m")), dz, false, "m"});
+  test::verify({"Apparent crater of a synthetic paraboloid bowl with ejecta above it: depth",
+                "the bowl's depth (by construction)", bowl_depth, std::stod(m.at("crater_depth_m")), 1e-6,
+                false, "m"});
+  test::verify({"Box damage of a synthetic output: front-wall mean", "0.8 on the upper half, 0.1 below", 0.45,
+                std::stod(m.at("front_wall_mean_damage")), 1e-9, false, "-"});
+  EXPECT_DOUBLE_EQ(std::stod(m.at("max_damage")), 0.8);
+  EXPECT_EQ(m.at("max_damage_member"), "front wall");
+  EXPECT_DOUBLE_EQ(std::stod(m.at("other_members_mean_damage")), 0.05);  // the roof
+  EXPECT_DOUBLE_EQ(std::stod(m.at("energy_error")), 0.012);
+}
+
+}  // namespace
+}  // namespace camouflet

@@ -146,6 +146,17 @@ TEST(SweepFile, ListCasesTakeTheirNames) {
   EXPECT_EQ(s.cases[1].values, (std::vector<std::string>{"", "sandy_clay_wang2005"}));
 }
 
+// The examples of docs/buried-structure.md read and expand.
+TEST(SweepFile, ExamplesInCasesSweepsRead) {
+  const fs::path dir = fs::path(CAMOUFLET_SOURCE_DIR) / "cases" / "sweeps";
+  const SweepSpec grid = read_sweep(dir / "charge_standoff.sweep.toml");
+  EXPECT_EQ(grid.cases.size(), 6u);
+  EXPECT_DOUBLE_EQ(grid.cases[0].params["run"]["end_time"].value_or(0.0), 0.03);
+  const SweepSpec list = read_sweep(dir / "soil.sweep.toml");
+  ASSERT_EQ(list.cases.size(), 2u);
+  EXPECT_EQ(list.cases[1].name, "seismic");
+}
+
 // Bad input: status 2 and one line naming the sweep file, the line and the key.
 TEST(SweepCommand, BadInputNamesFileLineAndKey) {
   const fs::path dir = folder("sweep_bad");

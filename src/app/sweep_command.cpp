@@ -107,7 +107,8 @@ int run_sweep(const SweepArguments& args) {
   const fs::path out =
       args.output_dir.empty() ? fs::path("results") / sweep_name(args.sweep_file) : fs::path(args.output_dir);
   fs::create_directories(out);
-  fs::copy_file(args.sweep_file, out / "sweep.toml", fs::copy_options::overwrite_existing);
+  if (!fs::exists(out / "sweep.toml") || !fs::equivalent(args.sweep_file, out / "sweep.toml"))
+    fs::copy_file(args.sweep_file, out / "sweep.toml", fs::copy_options::overwrite_existing);
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const int jobs = args.jobs > 0 ? args.jobs : std::max(1, cores / args.threads);
   std::cout << fmt::format("sweep {}: {} cases of {} (varying {}), {} at a time, {} thread{} each\n",

@@ -64,7 +64,9 @@ void assign(toml::table& params, const Setting& s) {
 }
 
 bool valid_name(const std::string& n) {
-  if (n.empty() || n == "." || n == "..") return false;
+  // The sweep's own files share the output folder with the case folders.
+  for (const char* reserved : {"", ".", "..", "sweep.toml", "cases.csv", "sweep.csv", "sweep.png"})
+    if (n == reserved) return false;
   for (char c : n)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
   return true;
@@ -199,7 +201,10 @@ SweepSpec read_sweep_text(const std::string& text, const std::filesystem::path& 
       for (Setting& s : settings) {
         if (s.key == "name") {
           if (!s.value->is_string() || !valid_name(s.value->as_string()->get()))
-            throw InputError(s.where, "expected a folder name of letters, digits, '_', '-' and '.'");
+            throw InputError(
+                s.where,
+                "expected a folder name of letters, digits, '_', '-' and '.' (not one of the sweep's "
+                "files sweep.toml, cases.csv, sweep.csv, sweep.png)");
           name = s.value->as_string()->get();
           continue;
         }

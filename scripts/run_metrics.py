@@ -50,7 +50,10 @@ def generator_parameters(case_path):
                 if m:
                     for item in m.group(1).split():
                         key, _, value = item.partition("=")
-                        params[key] = float(value)
+                        try:
+                            params[key] = float(value)
+                        except ValueError:
+                            params[key] = value  # a word (e.g. a geometry), kept as text
     except OSError:
         pass
     return params
@@ -173,11 +176,13 @@ def _member(r, z, box):
 
 
 def _reference_snapshot(outdir):
-    """Mesh and particle data of the last snapshot with reference (initial) positions x - u."""
+    """Mesh and particle data of the last snapshot with reference (initial) positions x - u; {} for 3-D."""
     files, t = last_snapshots(outdir)
     out = {}
     for part, path in files.items():
         pts, conn, f = read_vtu(path)
+        if len(pts) and np.any(pts[:, 2] != 0.0):
+            return {}, t  # a 3-D model: the crater and member definitions here are for r-z (x = r, y = z)
         u = f.get("displacement", np.zeros_like(pts))
         ref = pts[:, :2] - u[:, :2]
         out[part] = (pts[:, :2], ref, conn, f)

@@ -1,9 +1,9 @@
 // `camouflet sweep` (issue 8, docs/buried-structure.md "Parameter studies"):
-// the sweep file's expansion and its bad input, and a study of three tiny
+// the sweep file's expansion and its bad input, and a study of four tiny
 // cases run through the executable: the CSV has one row per case with the
-// varied keys, the status and the results; a case the generator refuses is
-// recorded without stopping the others; the front wall's peak velocity grows
-// with the charge mass.
+// varied keys, the status and the results; a case the generator refuses and
+// one whose run (a child process) fails are recorded without stopping the
+// others; the front wall's peak velocity grows with the charge mass.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -192,31 +192,47 @@ TEST(SweepCommand, BadInputNamesFileLineAndKey) {
       << r.output;
 }
 
-TEST(SweepCommand, RunsEveryCaseAndRecordsTheRefusedOne) {
+TEST(SweepCommand, RunsEveryCaseAndRecordsTheFailedOnes) {
   if (test::run_camouflet_raw("/usr/bin/python3 -c 'import numpy'").status != 0)
     GTEST_SKIP() << "python3-numpy is not installed: sweep.csv is not collected";
   const fs::path dir = folder("sweep_run");
   const fs::path file = sweep_file(dir,
                                    "[[case]]\nname = \"light\"\ncharge.mass = 1.0\n"
                                    "[[case]]\nname = \"overlap\"\nstructure.standoff = 0.1\n"
-                                   "[[case]]\nname = \"heavy\"\ncharge.mass = 2.0\n");
+                                   "[[case]]\nname = \"heavy\"\ncharge.mass = 2.0\n"
+                                   "[[case]]\nname = \"badsoil\"\nsoil.preset = \"no_such_soil\"\n");
   const fs::path out = dir / "out";
   const auto r = test::run_camouflet("sweep '" + file.string() + "' -o '" + out.string() + "' --jobs 2");
   std::cout << r.output;
-  EXPECT_EQ(r.status, 1) << "one case is refused: status 1 " << r.output;
+  EXPECT_EQ(r.status, 1) << "two cases fail: status 1 " << r.output;
   std::vector<std::string> header;
   const auto rows = read_rows(out / "sweep.csv", header);
-  ASSERT_EQ(rows.size(), 3u) << r.output;
-  for (const char* column :
-       {"case", "charge.mass", "structure.standoff", "status", "message", "wall_s",
-        "front_wall_peak_velocity_m_s", "floor_peak_velocity_m_s", "front_wall_peak_acceleration_g",
-        "floor_peak_acceleration_g", "tm5_velocity_low_m_s", "tm5_velocity_high_m_s",
-        "front_wall_peak_deflection_mm", "front_wall_final_displacement_mm", "max_damage",
-        "max_damage_member", "crater_radius_m", "crater_depth_m", "energy_error"})
+  ASSERT_EQ(rows.size(), 4u) << r.output;
+  for (const char* column : {"case",
+                             "charge.mass",
+                             "structure.standoff",
+                             "soil.preset",
+                             "status",
+                             "message",
+                             "wall_s",
+                             "front_wall_peak_velocity_m_s",
+                             "floor_peak_velocity_m_s",
+                             "front_wall_peak_acceleration_g",
+                             "floor_peak_acceleration_g",
+                             "tm5_velocity_low_m_s",
+                             "tm5_velocity_high_m_s",
+                             "front_wall_peak_deflection_mm",
+                             "front_wall_final_displacement_mm",
+                             "max_damage",
+                             "max_damage_member",
+                             "crater_radius_m",
+                             "crater_depth_m",
+                             "energy_error"})
     EXPECT_NE(std::find(header.begin(), header.end(), column), header.end()) << column;
   const auto& light = rows[0];
   const auto& overlap = rows[1];
   const auto& heavy = rows[2];
+  const auto& badsoil = rows[3];
   EXPECT_EQ(light.at("case"), "light");
   EXPECT_EQ(light.at("charge.mass"), "1");
   EXPECT_EQ(light.at("status"), "0");
@@ -227,6 +243,10 @@ TEST(SweepCommand, RunsEveryCaseAndRecordsTheRefusedOne) {
       << overlap.at("message");
   EXPECT_NE(overlap.at("message").find("crosses the structure"), std::string::npos) << overlap.at("message");
   EXPECT_EQ(overlap.at("front_wall_peak_velocity_m_s"), "");
+  // Generated, but its run (a child process) refuses the case: the child's error line.
+  EXPECT_EQ(badsoil.at("status"), "2");
+  EXPECT_NE(badsoil.at("message").find("unknown material preset 'no_such_soil'"), std::string::npos)
+      << badsoil.at("message");
   const double v_light = std::stod(light.at("front_wall_peak_velocity_m_s"));
   const double v_heavy = std::stod(heavy.at("front_wall_peak_velocity_m_s"));
   std::cout << "front-wall peak velocity: 1 kg " << v_light << " m/s, 2 kg " << v_heavy << " m/s\n";

@@ -25,6 +25,10 @@ F_COUPLING = 0.6  # the paper's coupling factor (section 5.3)
 
 # (title, targets, axis, word): the front wall moves horizontally (targets 1-3),
 # the floor vertically (targets 3-5), as the paper's Figs. 15 and 16.
+# Upward speed above which soil that has left its place is in flight (crater(), m/s): ejecta leave at
+# tens of m/s, the ground around a crater settles at well below this.
+EJECTA_SPEED = 10.0
+
 STRUCTURE_SETS = (("front wall", ("t1", "t2", "t3"), "x", "horizontal"),
                   ("floor", ("t3", "t4", "t5"), "y", "vertical"))
 
@@ -216,12 +220,14 @@ def crater(outdir, gen):
     """Apparent crater (radius, depth) [m] at the last snapshot, or None.
 
     The ground is the soil (every element and particle except the explosive and the box) that has not
-    been thrown out: a point above the original surface z = 0 that moved more than one layer spacing
-    dz is ejecta. In radial bins of width dz the ground's top is the highest such point; its
-    depression is the bin's reference top (the same points at t = 0) minus its current top. The crater
-    is the run of bins from the axis whose depression exceeds dz / 2 (empty bins skipped): its outer edge is the apparent
-    radius, its largest depression the apparent depth. dz is the spacing of the two top layers of
-    points near the axis. No gravity, no fallback: material still rising inside the bowl counts as
+    been thrown out: a particle that moved more than one layer spacing dz and is now above the original
+    surface z = 0 or rising faster than EJECTA_SPEED is ejecta (element nodes stay connected: a heaved
+    rim is ground). In radial bins of width dz the ground's
+    top is the highest other point; its depression is the bin's reference top (the same points at
+    t = 0) minus its current top. The crater is the run of bins from the axis whose depression exceeds
+    dz / 2 (empty bins skipped, one shallow bin between deep ones tolerated): its outer edge is the
+    apparent radius, its largest depression the apparent depth. dz is the spacing of the two top
+    layers of points near the axis. No gravity, no fallback: slow material inside the bowl counts as
     ground."""
     box = _box(gen)
     d = gen.get("burst_depth_m")
@@ -239,7 +245,7 @@ def crater(outdir, gen):
     if not candidates:
         return None
     explosive = min(candidates)[1]
-    cur, ref0 = [], []
+    cur, ref0, vz, loose = [], [], [], []
     for part, (x, ref, conn, f) in snap.items():
         mat = f["material"].astype(int)
         if part == 0:
@@ -253,14 +259,16 @@ def crater(outdir, gen):
             idx = np.nonzero(mat != explosive)[0]
         cur.append(x[idx])
         ref0.append(ref[idx])
-    cur, ref0 = np.concatenate(cur), np.concatenate(ref0)
+        vz.append(f["velocity"][idx, 1] if "velocity" in f else np.zeros(len(idx)))
+        loose.append(np.full(len(idx), part != 0))
+    cur, ref0, vz, loose = (np.concatenate(a) for a in (cur, ref0, vz, loose))
     near = ref0[ref0[:, 0] < max(d, 1e-9)]
     levels = np.unique(np.round(near[:, 1], 6))[::-1]  # to the micrometre: x - u carries round-off
     if len(levels) < 2:
         return None
     dz = float(levels[0] - levels[1])
     moved = np.hypot(*(cur - ref0).T)
-    ground = ~((cur[:, 1] > 0.0) & (moved > dz))
+    ground = ~(loose & (moved > dz) & ((cur[:, 1] > 0.0) | (vz > EJECTA_SPEED)))
     nbins = int(math.ceil(r1 / dz))
     ref_top = np.full(nbins, -np.inf)
     cur_top = np.full(nbins, -np.inf)
@@ -273,15 +281,17 @@ def crater(outdir, gen):
     for b, z, g in zip(b1, cur[:, 1], ground):
         if g and 0 <= b < nbins:
             cur_top[b] = max(cur_top[b], z)
+    # Bins with points now and at t = 0 (coarse spacing leaves some empty): (edge, depression).
+    drops = [((b + 1) * dz, float(ref_top[b] - cur_top[b])) for b in range(nbins)
+             if np.isfinite(ref_top[b]) and np.isfinite(cur_top[b])]
     radius = depth = 0.0
-    for b in range(nbins):
-        if not (np.isfinite(ref_top[b]) and np.isfinite(cur_top[b])):
-            continue  # no points in this bin now or at t = 0 (coarse spacing): it neither makes nor ends the crater
-        drop = ref_top[b] - cur_top[b]
+    for k, (edge, drop) in enumerate(drops):
         if drop <= 0.5 * dz:
-            break
-        radius = (b + 1) * dz
-        depth = max(depth, float(drop))
+            # One shallow bin (a point passing through) does not end the crater; two in a row do.
+            if k + 1 >= len(drops) or drops[k + 1][1] <= 0.5 * dz:
+                break
+            continue
+        radius, depth = edge, max(depth, drop)
     return radius, depth
 
 

@@ -74,6 +74,8 @@ class SphFemJoin {
  private:
   struct Point {
     std::size_t element = 0;
+    std::array<double, 3> xi{};            // natural coordinates in the element (0: its centre)
+    double share = 1.0;                    // of the element's area (sub-points of a coarse element)
     std::array<std::uint8_t, 3> planes{};  // images: planes applied in order
     std::uint8_t image_count = 0;
     double h0 = 0.0;             // m, smoothing length at the reference density
@@ -99,6 +101,7 @@ class SphFemJoin {
                             const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,
                             double reach);
   Vec<D> element_centre(std::size_t e) const;
+  Vec<D> interpolate(const double* field, const Point& point) const;  // node field (n*D) at the point
   Vec<D> image(Vec<D> x, const Point& point) const;
 
   const FemElements<D>* elements_ = nullptr;

@@ -14,7 +14,9 @@
 // SPH-Lagrange "join": the particle next to the interface has a full kernel
 // support (the elements continue its lattice, exactly when the spacing
 // matches the element size), so no free surface and no material interface
-// appears where the zones meet.
+// appears where the zones meet. An element coarser than the particles beside
+// it enters as k^d sub-points (k the spacing ratio rounded) with the particles'
+// smoothing length, so that the lattice continues also at graded spacing.
 //
 // Conservation: the pair force F_ij of the (symmetric) momentum sum acts on
 // particle i, and -F_ij goes to the FEM at the interface: spread equally over

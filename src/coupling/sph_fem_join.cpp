@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/sym_tensor_vec.hpp"
 #include "sph/artificial_stress.hpp"
@@ -35,6 +36,23 @@ Vec<D> SphFemJoin<D>::element_centre(std::size_t e) const {
     for (int i = 0; i < D; ++i) c[i] += x_[n * D + i] / N;
   }
   return c;
+}
+
+template <int D>
+Vec<D> SphFemJoin<D>::interpolate(const double* field, const Point& point) const {
+  // Bilinear (trilinear) shape functions N_a = prod_i (1 + xi_i xi_ai) / 2 of quad4 (hex8): node
+  // natural coordinates in the order of fem/shape.hpp (counter-clockwise, bottom face then top).
+  constexpr int N = FemElements<D>::nodes;
+  static constexpr double corner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                          {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  Vec<D> u{};
+  for (int a = 0; a < N; ++a) {
+    double shape = 1.0;
+    for (int i = 0; i < D; ++i) shape *= 0.5 * (1.0 + point.xi[static_cast<std::size_t>(i)] * corner[a][i]);
+    const std::int64_t n = elements_->connectivity[point.element * N + static_cast<std::size_t>(a)];
+    for (int i = 0; i < D; ++i) u[i] += shape * field[n * D + i];
+  }
+  return u;
 }
 
 template <int D>
@@ -93,28 +111,68 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
       where.push_back(sph::mirror_position(where[c], planes_[k]));
     }
   }
-  // Keep the candidates within reach of a particle (particles binned on a grid of edge `reach`).
+  // Particles binned on a grid of edge `reach`.
   std::unordered_map<std::int64_t, std::vector<std::uint32_t>> bins;
   for (std::size_t i = 0; i < pa.real; ++i)
     bins[cell_key<D>(pa.position[i], reach)].push_back(static_cast<std::uint32_t>(i));
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    bool near = false;
-    for (int a = -1; a <= 1 && !near; ++a)
-      for (int b = -1; b <= 1 && !near; ++b)
-        for (int d = (D == 3 ? -1 : 0); d <= (D == 3 ? 1 : 0) && !near; ++d) {
-          const auto it = bins.find(cell_key<D>(where[c], reach, {a, b, d}));
+  // The particle nearest to x within `range` cells of the grid (-1: none within range * reach).
+  auto nearest_particle = [&](const Vec<D>& x, int range) {
+    std::int64_t best = -1;
+    double best_d2 = std::pow(range * reach, 2);
+    for (int a = -range; a <= range; ++a)
+      for (int b = -range; b <= range; ++b)
+        for (int d = (D == 3 ? -range : 0); d <= (D == 3 ? range : 0); ++d) {
+          const auto it = bins.find(cell_key<D>(x, reach, {a, b, d}));
           if (it == bins.end()) continue;
           for (std::uint32_t i : it->second) {
-            const Vec<D> dx = pa.position[i] - where[c];
-            if (dot(dx, dx) < reach * reach) {
-              near = true;
-              break;
-            }
+            const Vec<D> dx = pa.position[i] - x;
+            if (dot(dx, dx) < best_d2) best_d2 = dot(dx, dx), best = i;
           }
         }
-    if (near) points_.push_back(candidates[c]);
+    return best;
+  };
+  // An element coarser than the particles beside it enters as k^D sub-points on a k x k (x k)
+  // grid of its natural coordinates, k the spacing ratio rounded (up from 1.3): the particles
+  // then see the elements continue their own lattice (spacing and smoothing length), as with
+  // equal spacing. With one coarse point per element the pair smoothing length (h_p + h_e) / 2
+  // under-resolves the coarse lattice and differs from the particles' own h, so the kernel sums
+  // of a particle at the join are not exact and a uniform stress pushes it: 9 % of a pulse's
+  // energy was lost at ratio 2 (0.5 % with sub-points; docs/theory/coupling.md). Sub-points
+  // carry the element's stress, its velocity field (shape functions) and their share of its area.
+  std::unordered_set<std::int64_t> near_cells;  // grid cells within 2 cells of a particle
+  for (const auto& [key, members] : bins)
+    for (int a = -2; a <= 2; ++a)
+      for (int b = -2; b <= 2; ++b)
+        for (int d = (D == 3 ? -2 : 0); d <= (D == 3 ? 2 : 0); ++d)
+          near_cells.insert(cell_key<D>(pa.position[members.front()], reach, {a, b, d}));
+  std::vector<Point> subs;
+  std::vector<Vec<D>> sub_where;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (!near_cells.contains(cell_key<D>(where[c], reach))) continue;
+    const std::int64_t i = nearest_particle(where[c], 2);  // every neighbour of a coupling point
+    if (i < 0) continue;
+    const double size = std::pow(candidates[c].planar_volume, 1.0 / D);
+    const double ratio = size / pa.spacing[static_cast<std::size_t>(i)];
+    const int k = std::clamp(static_cast<int>(std::lround(ratio + 0.2)), 1, 4);
+    int total = 1;
+    for (int d = 0; d < D; ++d) total *= k;
+    for (int m = 0; m < total; ++m) {
+      Point p = candidates[c];
+      for (int d = 0, rest = m; d < D; ++d, rest /= k)
+        p.xi[static_cast<std::size_t>(d)] = -1.0 + (2.0 * (rest % k) + 1.0) / k;
+      p.planar_volume /= total;
+      // The particle's own h: both sides of the join then have the same pair h (equal to h0 / k at
+      // an integer ratio). At k = 1 the element keeps its own, as with equal spacing.
+      if (k > 1) p.h0 = pa.reference_smoothing_length[static_cast<std::size_t>(i)];
+      p.share = 1.0 / total;
+      subs.push_back(p);
+      sub_where.push_back(image(interpolate(x_, p), p));
+    }
   }
-  compute_normalisation(particles, candidates, where, reach);
+  // Keep the sub-points within reach of a particle.
+  for (std::size_t c = 0; c < subs.size(); ++c)
+    if (nearest_particle(sub_where[c], 1) >= 0) points_.push_back(subs[c]);
+  compute_normalisation(particles, subs, sub_where, reach);
   // Interface faces: boundary faces of the joined elements with a particle just outside them.
   find_interface_faces(model, elements, particles, bins, reach);
   if (points_.empty() || faces_.empty()) {
@@ -196,7 +254,7 @@ void SphFemJoin<D>::find_interface_faces(
   }
   // Each coupling point sends its reactions to the interface face nearest to its element.
   for (Point& pt : points_) {
-    const Vec<D> ce = element_centre(pt.element);
+    const Vec<D> ce = interpolate(x_, pt);
     double best = 1e300;
     for (std::size_t k = 0; k < centres.size(); ++k) {
       const Vec<D> d = centres[k] - ce;
@@ -237,7 +295,7 @@ void SphFemJoin<D>::compute_normalisation(const sph::SphSystem<D>& particles,
   const auto& kernel = particles.kernel();
   for (Point& pt : points_) {
     // An image has the neighbourhood of its element mirrored: the same n.
-    const Vec<D> xj = element_centre(pt.element);
+    const Vec<D> xj = interpolate(x_, pt);
     double sum = 0.0;
     for (int a = -1; a <= 1; ++a)
       for (int b = -1; b <= 1; ++b)
@@ -265,20 +323,27 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
   for (std::size_t k = 0; k < points_.size(); ++k) {
     const Point& pt = points_[k];
     const std::size_t e = pt.element;
-    Vec<D> c{}, vel{};
-    for (int a = 0; a < N; ++a) {
-      const std::int64_t n = el.connectivity[e * N + static_cast<std::size_t>(a)];
-      for (int i = 0; i < D; ++i) {
-        c[i] += x_[n * D + i] / N;
-        vel[i] += v_[n * D + i] / N;
-      }
-    }
+    Vec<D> c = interpolate(x_, pt), vel = interpolate(v_, pt);
     // The stress the element's own nodal forces use: sigma - q I (fem_elements.cpp). Without q
     // the particles would see a different traction than the FEM transmits.
     SymTensor sigma = el.stress[e];
     sigma.xx -= el.viscosity[e];
     sigma.yy -= el.viscosity[e];
     sigma.zz -= el.viscosity[e];
+    // The ring weight of the element itself: an image carries its element's planar density, as a
+    // particle's ghost carries its particle's (SphSystem::refresh_ghosts), so that its volume
+    // m / eta is the element's planar area also across a roller r = R, where 2 pi r at the image
+    // would not be the element's (it cost 3 % of the energy of a pulse crossing an r-z column).
+    const double w = axisymmetric_ ? 2.0 * std::numbers::pi * std::abs(c[0]) : 1.0;
+    // Its share of the element's planar area: mass / eta = share x area (the element's ring
+    // mass over its centre's ring weight is rho x area, N_a = 1/N at the centre).
+    double mass = el.mass[e] * pt.share;
+    if (axisymmetric_) {
+      double r_centre = 0.0;
+      for (int a = 0; a < N; ++a)
+        r_centre += x_[el.connectivity[e * N + static_cast<std::size_t>(a)] * D] / N;
+      mass *= std::abs(c[0]) / r_centre;
+    }
     for (int m = 0; m < pt.image_count; ++m) {
       const sph::MirrorPlane& plane = planes_[pt.planes[static_cast<std::size_t>(m)]];
       c = sph::mirror_position(c, plane);
@@ -286,7 +351,6 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
       sigma = sph::mirror_tensor(sigma, plane.axis);
     }
     const double rho = el.density[e];
-    const double w = axisymmetric_ ? 2.0 * std::numbers::pi * std::abs(c[0]) : 1.0;
     const double eta = w * rho;
     double h = pt.h0;
     if (options_.variable_smoothing_length && rho > 0.0)
@@ -295,7 +359,7 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
     const std::size_t j = begin + k;
     p.position[j] = c;
     p.velocity[j] = vel;
-    p.mass[j] = el.mass[e];
+    p.mass[j] = mass;
     p.planar_density[j] = eta;
     p.smoothing_length[j] = h;
     // The lattice transmits n sigma across a plane (normalisation in the header): the element's

@@ -14,7 +14,9 @@
 // SPH-Lagrange "join": the particle next to the interface has a full kernel
 // support (the elements continue its lattice, exactly when the spacing
 // matches the element size), so no free surface and no material interface
-// appears where the zones meet.
+// appears where the zones meet. An element coarser than the particles beside
+// it enters as k^d sub-points (k the spacing ratio rounded) with the particles'
+// smoothing length, so that the lattice continues also at graded spacing.
 //
 // Conservation: the pair force F_ij of the (symmetric) momentum sum acts on
 // particle i, and -F_ij goes to the FEM at the interface: spread equally over
@@ -34,8 +36,8 @@
 // viscous heat (settle()); the part conjugate to the element's stress is the
 // "join work", which the solver adds to the boundary work of the energy
 // balance. It is the join's real energy error (the formulation conserves
-// momentum, not energy): -0.4 % of a 20-cell pulse over two crossings in plane
-// strain and 3-D (tests/coupling/test_join.cpp).
+// momentum, not energy): -0.6 to -0.8 % of a 20-cell pulse over two crossings in
+// plane strain, r-z and 3-D (tests/coupling/test_join.cpp).
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -74,6 +76,8 @@ class SphFemJoin {
  private:
   struct Point {
     std::size_t element = 0;
+    std::array<double, 3> xi{};            // natural coordinates in the element (0: its centre)
+    double share = 1.0;                    // of the element's area (sub-points of a coarse element)
     std::array<std::uint8_t, 3> planes{};  // images: planes applied in order
     std::uint8_t image_count = 0;
     double h0 = 0.0;             // m, smoothing length at the reference density
@@ -99,6 +103,7 @@ class SphFemJoin {
                             const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,
                             double reach);
   Vec<D> element_centre(std::size_t e) const;
+  Vec<D> interpolate(const double* field, const Point& point) const;  // node field (n*D) at the point
   Vec<D> image(Vec<D> x, const Point& point) const;
 
   const FemElements<D>* elements_ = nullptr;

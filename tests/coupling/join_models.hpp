@@ -41,16 +41,25 @@ inline TimeHistory sin2_pulse(double duration) {
   return h;
 }
 
+// Lateral extent of the column: `cells` elements wide, starting at `inner` (m) from the axis or
+// the x = 0 plane (inner > 0 in r-z: an annulus between two rollers, away from the axis).
+struct ColumnSection {
+  int cells = 4;
+  double inner = 0.0;
+};
+
 // cell: element size (m); spacing: particle spacing (m).
 template <int D>
-JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const Parameters& sph = {}) {
+JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const Parameters& sph = {},
+                           ColumnSection section = {}) {
   use_threads(1);
   const ElasticConstants c;
-  const double length = 1.2, width = 4 * cell;
+  const double length = 1.2, width = section.cells * cell;
   const bool axi = mode == GeometryMode::axisymmetric;
   const int along = axi ? 1 : 0;  // the column's axis: x, or z (= y) in r-z
   const int cells = static_cast<int>(std::lround(length / cell));
-  BlockSpec block{"bar", 0, {0, 0, 0}, {width, width, width}, {4, 4, 4}};
+  BlockSpec block{"bar", 0, {0, 0, 0}, {width, width, width}, {section.cells, section.cells, section.cells}};
+  block.origin[0] = section.inner;
   block.size[static_cast<std::size_t>(along)] = length;
   block.cells[static_cast<std::size_t>(along)] = cells;
   Model model = block_model(mode, {block}, c);
@@ -62,8 +71,8 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
   ParticleFillSpec fill;
   fill.part = 1;
   fill.spacing = spacing;
-  fill.region.min = {0, 0, 0};
-  fill.region.max = {width, width, width};
+  fill.region.min = {section.inner, 0, 0};
+  fill.region.max = {section.inner + width, width, width};
   fill.region.min[static_cast<std::size_t>(along)] = 0.4;
   fill.region.max[static_cast<std::size_t>(along)] = 0.8;
   make_joined_zone(model, fill);
@@ -85,7 +94,7 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
     if (axis == along) continue;
     std::array<double, 3> normal{};
     normal[static_cast<std::size_t>(axis)] = 1.0;
-    if (axi && axis == 0) {
+    if (axi && axis == 0 && section.inner == 0.0) {
       BoundaryCondition a;
       a.kind = BoundaryKind::axis;
       a.set = face(0, false);
@@ -105,7 +114,7 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
       if (solver.node_mass()[n] <= 0.0) continue;
       double d2 = 0.0;
       for (int i = 0; i < D; ++i) {
-        const double target = i == along ? s : 0.5 * width;
+        const double target = i == along ? s : (i == 0 ? section.inner : 0.0) + 0.5 * width;
         d2 += std::pow(solver.position()[n * D + static_cast<std::size_t>(i)] - target, 2);
       }
       if (d2 < best_d) best_d = d2, best = n;
@@ -120,7 +129,9 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
     double best = 1e300;
     for (std::size_t i = 0; i < pa.real; ++i) {
       double d2 = 0.0;
-      for (int k = 0; k < D; ++k) d2 += std::pow(pa.position[i][k] - (k == along ? s : 0.5 * width), 2);
+      for (int k = 0; k < D; ++k)
+        d2 +=
+            std::pow(pa.position[i][k] - (k == along ? s : (k == 0 ? section.inner : 0.0) + 0.5 * width), 2);
       if (d2 < best) best = d2, best_i = i;
     }
     return best_i;

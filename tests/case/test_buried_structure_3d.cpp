@@ -16,6 +16,7 @@
 #include "case/case_reader.hpp"
 #include "common/verification.hpp"
 #include "mesh/buried_structure.hpp"
+#include "run_executable.hpp"
 #include "solver/run.hpp"
 
 namespace camouflet {
@@ -181,7 +182,8 @@ TEST(BuriedStructure3d, SphZoneAndRebarMats) {
   }
 
   // Rebar: two mats in each of the five walls of the half model, bars both ways;
-  // total steel = ratio x wall x mat area per direction (the strips tile each mat; areas printed to 9 digits).
+  // total steel = ratio x wall x mat area per direction (the strips tile each mat; areas printed to 9
+  // digits).
   double steel = 0.0;
   for (const auto& bar : model.bars) {
     double len2 = 0.0;
@@ -266,6 +268,21 @@ TEST(BuriedStructure3d, ParameterFileKeysAndLines) {
     EXPECT_EQ(e.where().line, 3);
   }
   EXPECT_THROW(read_buried_structure_params_text("[domain]\ngeometry = \"3-d\"\n", "p.toml"), InputError);
+}
+
+// Through `camouflet generate`: status 2 and one line naming file, line and key.
+TEST(BuriedStructure3d, GenerateRefusesANegativeWidth) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "generate-bad-3d";
+  fs::create_directories(dir);
+  const fs::path params = dir / "width.params.toml";
+  std::ofstream(params) << "[domain]\ngeometry = \"3d\"\n[structure]\nwidth = -1.0\n";
+  const auto r =
+      test::run_camouflet("generate '" + params.string() + "' -o '" + (dir / "out.toml").string() + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("width.params.toml:4"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("key 'structure.width'"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out.toml"));
 }
 
 // A tiny 3-D case with the SPH zone and rebar (2 kg TNT at 0.2 m beside a

@@ -55,10 +55,10 @@ void add_generate_command(CLI::App& app, CommandResult& result) {
                                                                        : "");
       if (spec.sph_radius > 0.0)
         std::cout << fmt::format(
-            "SPH zone r <= {} m: {} soil particles of {:.4g} m joined to the FEM soil; charge {} particles "
+            "SPH zone {} <= {} m: {} soil particles of {:.4g} m joined to the FEM soil; charge {} particles "
             "of "
             "{:.4g} m ({:.2f} kg modelled)\n",
-            spec.sph_radius, layout.zone_particles, layout.zone_spacing, layout.charge_particles,
+            spec.three_d ? "|x|, y" : "r", spec.sph_radius, layout.zone_particles, layout.zone_spacing, layout.charge_particles,
             layout.charge_spacing, layout.charge_model_mass);
       return static_cast<int>(exit_ok);
     });

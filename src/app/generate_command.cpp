@@ -58,8 +58,8 @@ void add_generate_command(CLI::App& app, CommandResult& result) {
             "SPH zone {} <= {} m: {} soil particles of {:.4g} m joined to the FEM soil; charge {} particles "
             "of "
             "{:.4g} m ({:.2f} kg modelled)\n",
-            spec.three_d ? "|x|, y" : "r", spec.sph_radius, layout.zone_particles, layout.zone_spacing, layout.charge_particles,
-            layout.charge_spacing, layout.charge_model_mass);
+            spec.three_d ? "|x|, y" : "r", spec.sph_radius, layout.zone_particles, layout.zone_spacing,
+            layout.charge_particles, layout.charge_spacing, layout.charge_model_mass);
       return static_cast<int>(exit_ok);
     });
   });

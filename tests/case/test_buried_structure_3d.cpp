@@ -286,9 +286,8 @@ TEST(BuriedStructure3d, GenerateRefusesANegativeWidth) {
   EXPECT_FALSE(fs::exists(dir / "out.toml"));
 }
 
-// A tiny 3-D case with the SPH zone and rebar (2 kg TNT at 0.2 m beside a
-// 0.6 m box) runs its first 0.25 ms with a finite, small energy-balance error.
-TEST(BuriedStructure3d, TinyCaseRuns) {
+// A tiny 3-D case (2 kg TNT at 0.2 m beside a 0.6 m box) with the SPH zone and rebar.
+BuriedStructureSpec tiny_3d() {
   BuriedStructureSpec s;
   s.three_d = true;
   s.charge_mass = 2.0;
@@ -314,19 +313,43 @@ TEST(BuriedStructure3d, TinyCaseRuns) {
   s.field_interval = 0.0;
   s.gauge_interval = 2e-5;
   s.gauge_count = 3;
-  const Model model = read_case_text(buried_structure_case(s, "test"), "tiny3d.toml");
-  const auto out = std::filesystem::path(CAMOUFLET_BINARY_DIR) / "test-output" / "buried_3d_tiny";
+  return s;
+}
+
+RunSummary run_tiny(const BuriedStructureSpec& s, const std::string& name) {
+  const Model model = read_case_text(buried_structure_case(s, "test"), name + ".toml");
+  const auto out = std::filesystem::path(CAMOUFLET_BINARY_DIR) / "test-output" / name;
   std::filesystem::remove_all(out);
   RunOptions options;
   options.output_dir = out;
   options.progress = ProgressStyle::none;
   options.threads = 1;
   const RunSummary summary = run_model(model, options);
-  ASSERT_FALSE(summary.failed) << summary.stop_reason;
-  std::cout << "tiny 3-D case: " << model.mesh.element_count() << " elements, " << model.particles.count()
+  std::cout << name << ": " << model.mesh.element_count() << " elements, " << model.particles.count()
             << " particles, " << model.bars.size() << " bars, " << summary.cycles << " cycles, energy error "
             << summary.energy.relative_error << "\n";
+  return summary;
+}
+
+// Its first 0.25 ms run with a finite, small energy-balance error.
+TEST(BuriedStructure3d, TinyCaseRuns) {
+  const RunSummary summary = run_tiny(tiny_3d(), "buried_3d_tiny");
+  ASSERT_FALSE(summary.failed) << summary.stop_reason;
   EXPECT_GT(summary.cycles, 20);
+  EXPECT_TRUE(std::isfinite(summary.energy.relative_error));
+  EXPECT_LT(summary.energy.relative_error, 0.05);
+}
+
+// The same without SPH zone and rebar: the charge as hex elements (the half
+// cube), lit on the symmetry plane, runs its first 0.1 ms.
+TEST(BuriedStructure3d, TinyFemChargeCaseRuns) {
+  BuriedStructureSpec s = tiny_3d();
+  s.sph_radius = 0.0;
+  s.has_rebar = false;
+  s.end_time = 0.1e-3;
+  const RunSummary summary = run_tiny(s, "buried_3d_tiny_fem");
+  ASSERT_FALSE(summary.failed) << summary.stop_reason;
+  EXPECT_GT(summary.cycles, 10);
   EXPECT_TRUE(std::isfinite(summary.energy.relative_error));
   EXPECT_LT(summary.energy.relative_error, 0.05);
 }

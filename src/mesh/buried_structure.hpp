@@ -7,7 +7,8 @@
 // blocks of one tensor-product grid (so every block shares its nodes with its
 // neighbours: the fused soil-structure interface of the paper), graded fine
 // near the charge and in the structure, coarse far away; transmitting far
-// edges; gauges of the paper's Figs. 8a and 10. docs/buried-structure.md.
+// edges; gauges of the paper's Figs. 8a and 10. With `three_d` it writes a 3-D
+// half model instead (buried_structure_3d.cpp). docs/buried-structure.md.
 #include <map>
 #include <string>
 #include <vector>

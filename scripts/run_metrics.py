@@ -41,7 +41,24 @@ def read_csv(path):
     if data.size == 0:
         data = np.zeros((0, len(header)))
     cols = {name: data[:, k] for k, name in enumerate(header)}
+    if any(name.endswith(".position_z") for name in header):
+        cols = {symmetry_plane_name(name): v for name, v in cols.items()}
     return cols["time_s"], cols
+
+
+def symmetry_plane_name(name):
+    """3-D half model (docs/buried-structure.md, "3-D variant"): its gauges lie
+    in the symmetry plane y = 0 with z up, so the plane's (x, z) columns become
+    the report's (r, z) = (x, y) ones, and y the out-of-plane direction."""
+    gauge, _, quantity = name.rpartition(".")
+    swap = {"stress_yy": "stress_zz", "stress_zz": "stress_yy", "stress_xy": "stress_zx", "stress_zx": "stress_xy"}
+    if quantity in swap:
+        quantity = swap[quantity]
+    elif quantity.endswith("_y"):
+        quantity = quantity[:-2] + "_z"
+    elif quantity.endswith("_z"):
+        quantity = quantity[:-2] + "_y"
+    return f"{gauge}.{quantity}" if gauge else name
 
 
 def generator_parameters(case_path):

@@ -44,21 +44,22 @@ void add_generate_command(CLI::App& app, CommandResult& result) {
       if (!out || !(out << text) || !out.flush())
         throw std::ios_base::failure(fmt::format("cannot write {}", target.string()));
       std::cout << fmt::format(
-          "wrote {}: {} blocks, {} elements; charge radius {:.3f} m; grid {} x {} lines\n"
+          "wrote {}{}: {} blocks, {} elements; charge radius {:.3f} m; grid {}{} x {} lines\n"
           "far edges {}: a reflected wave would reach the front wall after {:.1f} ms (end time {:.1f} "
           "ms){}\n",
-          target.string(), layout.block_count, layout.element_count, layout.charge_radius,
-          layout.r_lines.size(), layout.z_lines.size(), spec.transmitting ? "transmitting" : "FIXED",
-          1e3 * layout.reflection_time, 1e3 * spec.end_time,
+          target.string(), spec.three_d ? " (3-D half model)" : "", layout.block_count, layout.element_count,
+          layout.charge_radius, layout.r_lines.size(),
+          spec.three_d ? fmt::format(" x {}", layout.y_lines.size()) : std::string(), layout.z_lines.size(),
+          spec.transmitting ? "transmitting" : "FIXED", 1e3 * layout.reflection_time, 1e3 * spec.end_time,
           !spec.transmitting && layout.reflection_time < spec.end_time ? "  WARNING: before the end time"
                                                                        : "");
       if (spec.sph_radius > 0.0)
         std::cout << fmt::format(
-            "SPH zone r <= {} m: {} soil particles of {:.4g} m joined to the FEM soil; charge {} particles "
+            "SPH zone {} <= {} m: {} soil particles of {:.4g} m joined to the FEM soil; charge {} particles "
             "of "
             "{:.4g} m ({:.2f} kg modelled)\n",
-            spec.sph_radius, layout.zone_particles, layout.zone_spacing, layout.charge_particles,
-            layout.charge_spacing, layout.charge_model_mass);
+            spec.three_d ? "|x|, y" : "r", spec.sph_radius, layout.zone_particles, layout.zone_spacing,
+            layout.charge_particles, layout.charge_spacing, layout.charge_model_mass);
       return static_cast<int>(exit_ok);
     });
   });

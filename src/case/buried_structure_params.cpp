@@ -53,6 +53,7 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "height", s.box_height, s);
     read(*t, "wall_thickness", s.wall_thickness, s);
     read(*t, "top_depth", s.top_depth, s);
+    read(*t, "width", s.box_width, s);
     read(*t, "concrete", s.concrete, s);
     t->finish();
   }
@@ -78,6 +79,11 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
   if (auto t = root.table("domain")) {
     read(*t, "radius", s.domain_radius, s);
     read(*t, "depth", s.domain_depth, s);
+    read(*t, "side", s.domain_side, s);
+    if (t->has("geometry")) {
+      s.three_d = t->choice("geometry", {"axisymmetric", "3d"}, "") == "3d";
+      s.where["domain.geometry"] = t->where("geometry");
+    }
     if (t->has("far_edges"))
       s.transmitting = t->choice("far_edges", {"transmitting", "fixed"}, "") == "transmitting";
     t->finish();

@@ -7,6 +7,8 @@
 #include <iterator>
 #include <numbers>
 
+#include "mesh/buried_structure_internal.hpp"
+#include "mesh/graded_axis.hpp"
 #include "mesh/particle_fill.hpp"
 
 namespace camouflet {
@@ -18,84 +20,10 @@ SourceLocation BuriedStructureSpec::location(const std::string& key) const {
 
 namespace {
 
-// A stretch of one axis meshed with a uniform target size (m).
-struct Zone {
-  double lo, hi, size;
-};
-
-// One interval of an axis: [a, b], its cells and grading (last/first cell size).
-struct Interval {
-  double a, b;
-  int cells;
-  double grading;
-};
-
-int cells_for(double length, double h0, double h1) {
-  // Cells of a size growing linearly from h0 to h1: integral of dx / h(x).
-  const double n =
-      std::abs(h1 / h0 - 1.0) < 0.05 ? length / (0.5 * (h0 + h1)) : length * std::log(h1 / h0) / (h1 - h0);
-  return std::max(1, static_cast<int>(std::ceil(n - 1e-6)));
-}
-
-void add_graded(std::vector<Interval>& out, double a, double b, double h0, double h1) {
-  const int n = cells_for(b - a, h0, h1);
-  out.push_back({a, b, n, n > 1 ? h1 / h0 : 1.0});
-}
-
-// Lays out one axis from `lo` to `hi`: breakpoints at every zone end and
-// material line, uniform cells inside zones, geometric grading in the gaps
-// (up to `gap_size` in their middle), growing to `far_size` at `hi`.
-std::vector<Interval> layout_axis(double lo, double hi, std::vector<double> lines,
-                                  const std::vector<Zone>& zones, double gap_size, double far_size) {
-  lines.push_back(lo);
-  lines.push_back(hi);
-  for (const Zone& z : zones) {
-    lines.push_back(std::clamp(z.lo, lo, hi));
-    lines.push_back(std::clamp(z.hi, lo, hi));
-  }
-  std::sort(lines.begin(), lines.end());
-  std::vector<double> unique;
-  for (double x : lines)
-    if (x >= lo && x <= hi && (unique.empty() || x - unique.back() > 1e-9)) unique.push_back(x);
-  const auto zone_size = [&](double x) {
-    double h = 0.0;
-    for (const Zone& z : zones)
-      if (x > z.lo && x < z.hi) h = h > 0.0 ? std::min(h, z.size) : z.size;
-    return h;  // 0: in no zone
-  };
-  std::vector<Interval> out;
-  for (std::size_t k = 0; k + 1 < unique.size(); ++k) {
-    const double a = unique[k], b = unique[k + 1];
-    const double inside = zone_size(0.5 * (a + b));
-    if (inside > 0.0) {
-      add_graded(out, a, b, inside, inside);
-      continue;
-    }
-    const double eps = 1e-6 * (hi - lo);
-    double hl = zone_size(a - eps), hr = zone_size(b + eps);
-    if (!(hl > 0.0)) hl = gap_size;
-    if (b >= hi) {
-      add_graded(out, a, b, hl, std::max(hl, far_size));
-      continue;
-    }
-    if (!(hr > 0.0)) hr = gap_size;
-    const double middle = std::min(gap_size, std::max({hl, hr, 0.25 * (b - a)}));
-    if (middle <= 1.05 * std::max(hl, hr)) {
-      add_graded(out, a, b, hl, hr);
-    } else {
-      const double m = 0.5 * (a + b);
-      add_graded(out, a, m, hl, middle);
-      add_graded(out, m, b, middle, hr);
-    }
-  }
-  return out;
-}
-
-std::vector<double> ends_of(const std::vector<Interval>& axis) {
-  std::vector<double> x{axis.front().a};
-  for (const Interval& i : axis) x.push_back(i.b);
-  return x;
-}
+using buried_detail::ends_of;
+using buried_detail::Interval;
+using buried_detail::layout_axis;
+using buried_detail::Zone;
 
 enum class Fill { soil, charge, concrete, empty };
 
@@ -330,6 +258,8 @@ void write_rebar(const BuriedStructureSpec& s, std::string& b) {
 }  // namespace
 
 BuriedStructureLayout layout_buried_structure(const BuriedStructureSpec& spec) {
+  buried_detail::check_geometry_keys(spec);
+  if (spec.three_d) return buried_detail::layout_3d(spec);
   BuriedStructureLayout L;
   L.charge_radius = charge_radius_of(spec);
   check(spec, L.charge_radius);
@@ -355,6 +285,7 @@ BuriedStructureLayout layout_buried_structure(const BuriedStructureSpec& spec) {
 }
 
 std::string buried_structure_case(const BuriedStructureSpec& s, const std::string& regenerate) {
+  if (s.three_d) return buried_detail::case_3d(s, regenerate);
   const BuriedStructureLayout L = layout_buried_structure(s);
   const Grid g = make_grid(s, L.charge_half_size);
   std::string b;
@@ -542,5 +473,21 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
   b += "]\n";
   return b;
 }
+
+namespace buried_detail {
+
+void check_common(const BuriedStructureSpec& s, double a) {
+  check(s, a);
+}
+
+double charge_radius(const BuriedStructureSpec& s) {
+  return charge_radius_of(s);
+}
+
+std::vector<double> soil_gauge_ranges(const BuriedStructureSpec& s, double far) {
+  return gauge_ranges(s, far);
+}
+
+}  // namespace buried_detail
 
 }  // namespace camouflet

@@ -7,7 +7,8 @@
 // blocks of one tensor-product grid (so every block shares its nodes with its
 // neighbours: the fused soil-structure interface of the paper), graded fine
 // near the charge and in the structure, coarse far away; transmitting far
-// edges; gauges of the paper's Figs. 8a and 10. docs/buried-structure.md.
+// edges; gauges of the paper's Figs. 8a and 10. With `three_d` it writes a 3-D
+// half model instead (buried_structure_3d.cpp). docs/buried-structure.md.
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +19,16 @@ namespace camouflet {
 
 struct BuriedStructureSpec {
   std::string title = "Buried RC box under a side burst (Wang et al. 2005, section 5)";
+  // Geometry: false = 2-D axisymmetric (r, z), the paper's model; true = 3-D
+  // (x towards the box, y along its front wall, z up; the charge on the z
+  // axis, symmetry plane y = 0 through the charge and the box's mid-width):
+  // buried_structure_3d.cpp. In 3-D "r" below reads "x".
+  // 3-D only: the box's outer extent along its front wall (y, whole box), and
+  // the distance from the charge axis to the far faces behind (x = -side) and
+  // beside (y = side) the charge, 0 = domain_radius.
+  bool three_d = false;
+  double box_width = 0.0;    // m
+  double domain_side = 0.0;  // m
   // Charge: a sphere of `charge_mass` kg of `explosive` (a material preset),
   // centre `burst_depth` m below the ground surface, on the axis.
   double charge_mass = 100.0;  // kg
@@ -74,9 +85,10 @@ struct BuriedStructureSpec {
 // Derived geometry, also printed by `camouflet generate`.
 struct BuriedStructureLayout {
   double charge_radius = 0.0;     // m, sphere of the given mass
-  double charge_half_size = 0.0;  // m, half side of the equal-volume r-z square (cylinder h = 2 a)
-  std::vector<double> r_lines;    // block boundaries along r (m)
+  double charge_half_size = 0.0;  // m, half side of the equal-volume r-z square (cylinder h = 2 a; 3-D: cube)
+  std::vector<double> r_lines;    // block boundaries along r (3-D: x) (m)
   std::vector<double> z_lines;    // block boundaries along z (m, increasing: -depth .. 0)
+  std::vector<double> y_lines;    // 3-D only: block boundaries along y (m, 0 .. domain side)
   std::size_t element_count = 0;
   std::size_t block_count = 0;
   double reflection_time = 0.0;  // s, earliest arrival at the front wall of a wave reflected at a far edge

@@ -160,6 +160,12 @@ std::vector<sph::MirrorPlane> Solver<D>::particle_planes() const {
     if (axis < 0 || set == model_.mesh.node_sets.end() || set->second.empty()) continue;
     const double position = model_.mesh.coordinates[static_cast<std::size_t>(set->second.front() * D + axis)];
     if (mode_ == GeometryMode::axisymmetric && axis == 0 && std::abs(position) < 1e-12) continue;
+    // One plane once, however many sets (e.g. one per block) it is split into:
+    // a repeated plane would mirror each particle again (a ghost of a ghost).
+    const auto same = [&](const sph::MirrorPlane& p) {
+      return p.axis == axis && std::abs(p.position - position) <= 1e-9 * (1.0 + std::abs(position));
+    };
+    if (std::any_of(planes.begin(), planes.end(), same)) continue;
     planes.push_back({axis, position, sph::PlaneKind::symmetry});
   }
   return planes;

@@ -1,0 +1,28 @@
+#pragma once
+// Shared between the axisymmetric (buried_structure.cpp) and the 3-D
+// (buried_structure_3d.cpp) buried-structure generators; not a public interface.
+#include <string>
+#include <vector>
+
+#include "mesh/buried_structure.hpp"
+
+namespace camouflet::buried_detail {
+
+// The checks both geometries share (charge buried, structure clear of the
+// charge and of the near-field and SPH zones, domain holds them, sizes
+// positive, rebar cover and ratio): InputError naming the key. `a` is the charge radius (m).
+void check_common(const BuriedStructureSpec& s, double a);
+// Radius (m) of the charge sphere of the given mass and density.
+double charge_radius(const BuriedStructureSpec& s);
+// Ranges (m from the charge centre) of the soil gauges of groups A and B, out to `far`.
+std::vector<double> soil_gauge_ranges(const BuriedStructureSpec& s, double far);
+
+// Keys of one geometry given in the other (structure.width, domain.side in
+// r-z) or missing (structure.width in 3-D): InputError naming the key.
+void check_geometry_keys(const BuriedStructureSpec& s);
+BuriedStructureLayout layout_3d(const BuriedStructureSpec& s);
+std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate);
+// Appends the 3-D box's rebar mats as [[bars]] (buried_rebar_3d.cpp).
+void write_rebar_3d(const BuriedStructureSpec& s, std::string& b);
+
+}  // namespace camouflet::buried_detail

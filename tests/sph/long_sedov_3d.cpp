@@ -13,7 +13,7 @@
 // * artificial conductivity (Price 2008) alpha_u = 1: without it the 7 hot
 //   particles keep about half of the energy at t_end (the exact solution has
 //   16 % in that mass), the shock runs on the rest and comes out 15-18 % short;
-// * kernel correction (as the r-z test): 3.5 % -> 0.3 % at dx = 0.03;
+// * kernel correction (as the r-z test): -3.3 % -> +0.3 % at dx = 0.03;
 // * the variable-step leapfrog of the solver (run_leapfrog_until): the
 //   step grows ten-fold in the first cycles, and kicking with the new step
 //   instead of the mean of the two half steps gains ~0.5 % energy.

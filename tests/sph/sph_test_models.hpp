@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -93,7 +94,8 @@ long run_until(sph::SphSystem<D>& system, double t_end, double cfl, long max_cyc
 // energy to first order when the step grows fast (a point blast's first cycles).
 // Returns the number of cycles; the last step goes to *dt_last.
 template <int D>
-long run_leapfrog_until(sph::SphSystem<D>& system, double t_end, double cfl, double* dt_last = nullptr) {
+long run_leapfrog_until(sph::SphSystem<D>& system, double t_end, double cfl, double* dt_last = nullptr,
+                        const std::function<void()>& after_each_cycle = {}) {
   omp_set_num_threads(1);
   double t = 0.0, dt_previous = 0.0;
   long cycles = 0;
@@ -108,6 +110,7 @@ long run_leapfrog_until(sph::SphSystem<D>& system, double t_end, double cfl, dou
     system.compute_accelerations();
     dt_previous = dt;
     ++cycles;
+    if (after_each_cycle) after_each_cycle();
   }
   if (dt_last) *dt_last = dt_previous;
   return cycles;

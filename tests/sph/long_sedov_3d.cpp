@@ -6,8 +6,8 @@
 //   R(t) = xi0 (E t^2 / rho0)^(1/5),  xi0 = 1.033 for gamma = 1.4
 // (Taylor 1950, Proc. R. Soc. A 201, 159; Sedov 1959; 1.0328 from our own
 // integration of the similarity equations), located at the peak of the
-// radially binned density. dx = 0.02 m: 21 952 particles, ~170 cycles,
-// about 10 min on one core of the loaded test machine.
+// radially binned density. dx = 0.02 m: 21 952 particles, 171 cycles,
+// 13-15 min on one core of the loaded test machine (760 s and 869 s measured).
 //
 // Settings and why (docs/theory/sph.md, "Sedov blast in 3-D"):
 // * artificial conductivity (Price 2008) alpha_u = 1: without it the 7 hot

@@ -34,6 +34,7 @@ SphOptions read_sph_options(Parameters& block) {
   o.artificial_stress_epsilon =
       block.in_range("artificial_stress_epsilon", 0.0, 1.0, o.artificial_stress_epsilon);
   o.artificial_stress_power = block.positive("artificial_stress_power", o.artificial_stress_power);
+  o.conductivity = block.non_negative("conductivity", o.conductivity);
   o.volume_form = block.flag("volume_form", o.volume_form);
   o.xsph = block.in_range("xsph", 0.0, 1.0, o.xsph);
   o.kernel_correction = block.flag("kernel_correction", o.kernel_correction);

@@ -39,6 +39,15 @@ struct SphOptions {
   bool artificial_stress = true;
   double artificial_stress_epsilon = 0.3;
   double artificial_stress_power = 4.0;
+  // Artificial thermal conductivity (Price 2008, J. Comput. Phys. 227, 10040,
+  // eqs. 28 and 30): du_i/dt = sum_j m_j alpha_u v_sig (u_i - u_j) / rho_ij dW/dr,
+  // v_sig = sqrt(|p_i - p_j| / rho_ij), between particles of one EOS type
+  // (their specific energies share a reference). It spreads a spike of
+  // specific energy that the particles cannot resolve (a point blast's few
+  // hot particles keep most of its energy without it: docs/theory/sph.md,
+  // "Sedov"). Pairwise antisymmetric, so energy is conserved exactly.
+  // 0 = off (default); Price recommends alpha_u ~ 1.
+  double conductivity = 0.0;
   // Momentum/continuity pair (sph_system.hpp): true = volume form (Colagrossi &
   // Landrini 2003), robust at density jumps; false = classic density form
   // sigma_i/rho_i^2 + sigma_j/rho_j^2 (Monaghan 1992).

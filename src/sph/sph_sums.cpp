@@ -139,6 +139,30 @@ void SphSystem<D>::kick(double dt) {
   // docs/theory/sph.md).
   const bool tensile = options_.artificial_stress;
   const double power = options_.artificial_stress_power, factor = options_.smoothing_factor;
+  // Artificial conductivity (SphOptions::conductivity): specific energy,
+  // pressure, density and EOS family of every point, ghosts as their sources;
+  // coupling points (FEM) take no part.
+  const double alpha_u = options_.conductivity;
+  const bool conduct = alpha_u > 0.0;
+  std::vector<double> u, pressure, rho;
+  std::vector<int> family;
+  const std::size_t mirrored = n + ghosts_.size();
+  if (conduct) {
+    u.resize(mirrored);
+    pressure.resize(mirrored);
+    rho.resize(mirrored);
+    family.resize(mirrored);
+    for (std::size_t i = 0; i < n; ++i) {
+      u[i] = batches_[p_.material[i]].specific_energy[p_.slot[i]];
+      pressure[i] = p_.pressure[i];
+      rho[i] = p_.density[i];
+      family[i] = eos_family_[p_.material[i]];
+    }
+    for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+      const std::size_t s = ghosts_[g].source;
+      u[n + g] = u[s], pressure[n + g] = pressure[s], rho[n + g] = rho[s], family[n + g] = family[s];
+    }
+  }
 #pragma omp parallel for schedule(dynamic, 128)
   for (std::size_t i = 0; i < n; ++i) {
     double heat = 0.0;
@@ -149,8 +173,18 @@ void SphSystem<D>::kick(double dt) {
       if (r2 >= support_factor * support_factor * hij * hij) continue;
       const Vec<D> dv = v_old[i] - v_old[j];
       const double vr = dot(dv, dx);
-      if (vr >= 0.0 && !tensile) continue;
+      if (vr >= 0.0 && !tensile && !conduct) continue;
       const double r = std::sqrt(r2);
+      if (conduct && j < mirrored && family[j] == family[i] && u[i] != u[j]) {
+        // Price (2008), eqs. 28 and 30, with the planar density of the SPH
+        // sums (eta, ring mass in r-z) and dW/dr < 0: heat flows from i to j
+        // when u_i > u_j, and m_i du_i = -m_j du_j pair by pair.
+        const double rho_ij = 0.5 * (rho[i] + rho[j]);
+        const double v_sig = std::sqrt(std::abs(pressure[i] - pressure[j]) / rho_ij);
+        heat +=
+            m[j] * alpha_u * v_sig * (u[i] - u[j]) / (0.5 * (eta[i] + eta[j])) * kernel_.derivative(r, hij);
+      }
+      if (vr >= 0.0 && !tensile) continue;
       const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(r, hij));
       const Vec<D> mean_dv = (dv + (v_new[i] - v_new[j])) * 0.5;
       if (vr < 0.0) {

@@ -69,6 +69,15 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   batches_.resize(model.materials.size());
   batch_particles_.resize(model.materials.size());
   for (std::size_t m = 0; m < model.materials.size(); ++m) materials_[m] = model.materials[m].material;
+  eos_family_.resize(materials_.size());
+  for (std::size_t m = 0; m < materials_.size(); ++m) {
+    eos_family_[m] = static_cast<int>(m);
+    for (std::size_t k = 0; k < m && materials_[m]; ++k)
+      if (materials_[k] && materials_[k]->eos().type() == materials_[m]->eos().type()) {
+        eos_family_[m] = static_cast<int>(k);
+        break;
+      }
+  }
 
   for (std::size_t i = 0; i < n; ++i) {
     const int part = src.particle_part[i];

@@ -200,6 +200,9 @@ class SphSystem {
   std::vector<std::vector<std::uint32_t>> batch_particles_;  // particle of each slot
   bool force_rebuild_ = false;                               // after a re-sort
   std::int64_t builds_at_sort_ = 0, sorts_ = 0;              // re-sort bookkeeping
+  // Per material: the first material with the same EOS type; the artificial
+  // conductivity only joins particles of one family (SphOptions::conductivity).
+  std::vector<int> eos_family_;
   // Copies in id order for fill_snapshot() once the memory order differs.
   struct IdOrderCopy {
     std::vector<Vec<D>> position, displacement, velocity, acceleration;

@@ -62,6 +62,7 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
   offset_.assign(n_owned + 1, 0);
   list_.clear();
   sorted_.clear();
+  upper_.clear();
   if (n == 0) return;
 
   // Grid: cell edge = the largest interaction radius, so that all partners lie
@@ -147,17 +148,35 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     std::sort(list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]),
               list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]));
   }
+  find_upper();
+}
+
+template <int D>
+void NeighbourSearch<D>::find_upper() {
+  upper_.resize(n_owned_);
+  for (std::size_t i = 0; i < n_owned_; ++i) {
+    const auto first = list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]);
+    const auto last = list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]);
+    upper_[i] = static_cast<std::size_t>(std::upper_bound(first, last, static_cast<std::uint32_t>(i)) -
+                                         list_.begin());
+  }
 }
 
 template <int D>
 bool NeighbourSearch<D>::needs_rebuild(std::span<const Vec<D>> x, std::span<const double> h) const {
   if (x.size() != x_build_.size() || builds_ == 0) return true;
+  return skin_used(x, h) > skin_;
+}
+
+template <int D>
+double NeighbourSearch<D>::skin_used(std::span<const Vec<D>> x, std::span<const double> h) const {
+  if (x.size() != x_build_.size() || builds_ == 0) return std::numeric_limits<double>::infinity();
   double d2_max = 0.0, dh_max = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     d2_max = std::max(d2_max, squared_distance(x[i], x_build_[i]));
     dh_max = std::max(dh_max, h[i] - h_build_[i]);
   }
-  return 2.0 * std::sqrt(d2_max) + support_factor * dh_max > skin_;
+  return 2.0 * std::sqrt(d2_max) + support_factor * dh_max;
 }
 
 template <int D>

@@ -62,7 +62,6 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
   offset_.assign(n_owned + 1, 0);
   list_.clear();
   sorted_.clear();
-  upper_.clear();
   if (n == 0) return;
 
   // Grid: cell edge = the largest interaction radius, so that all partners lie
@@ -147,18 +146,6 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     visit(i, [&](std::uint32_t j) { list_[k++] = j; });
     std::sort(list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]),
               list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]));
-  }
-  find_upper();
-}
-
-template <int D>
-void NeighbourSearch<D>::find_upper() {
-  upper_.resize(n_owned_);
-  for (std::size_t i = 0; i < n_owned_; ++i) {
-    const auto first = list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]);
-    const auto last = list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]);
-    upper_[i] = static_cast<std::size_t>(std::upper_bound(first, last, static_cast<std::uint32_t>(i)) -
-                                         list_.begin());
   }
 }
 

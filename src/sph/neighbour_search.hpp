@@ -38,16 +38,6 @@ class NeighbourSearch {
   std::span<const std::uint32_t> neighbours(std::size_t i) const {
     return {list_.data() + offset_[i], offset_[i + 1] - offset_[i]};
   }
-  // Index of point i's first entry in the concatenated lists: entry k of
-  // neighbours(i) is list entry offset(i) + k (per-pair arrays of the owner).
-  std::size_t offset(std::size_t i) const { return offset_[i]; }
-  // The part of neighbours(i) with j > i (lists are sorted): every owned pair
-  // once, plus all of i's pairs with points that own no list (ghosts), for
-  // pair-symmetric sums.
-  std::span<const std::uint32_t> upper_neighbours(std::size_t i) const {
-    return {list_.data() + upper_[i], offset_[i + 1] - upper_[i]};
-  }
-  std::size_t upper_offset(std::size_t i) const { return upper_[i]; }
   std::size_t owned_count() const { return n_owned_; }
   std::size_t pair_count() const { return list_.size(); }
   double skin() const { return skin_; }
@@ -58,9 +48,7 @@ class NeighbourSearch {
   void visit_state(StateVisitor& visitor);
 
  private:
-  void find_upper();  // upper_ from the sorted lists
   std::vector<std::size_t> offset_;
-  std::vector<std::size_t> upper_;  // first entry of list i with j > i
   std::vector<std::uint32_t> list_;
   std::vector<std::uint32_t> sorted_;
   std::vector<Vec<D>> x_build_;

@@ -23,7 +23,6 @@ void NeighbourSearch<D>::visit_state(StateVisitor& v) {
   n_owned_ = owned;
   visit(v, "skin", skin_);
   visit(v, "builds", builds_);
-  if (v.loading()) find_upper();  // derived from the lists
 }
 
 template <int D>

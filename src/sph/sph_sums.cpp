@@ -144,6 +144,9 @@ void SphSystem<D>::refresh_active_pairs() {
     active_upper_[i] = static_cast<std::size_t>(std::upper_bound(first, last, static_cast<std::uint32_t>(i)) -
                                                 active_.begin());
   }
+  upper_index_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    upper_index_[i + 1] = upper_index_[i] + (active_offset_[i + 1] - active_upper_[i]);
 }
 
 template <int D>
@@ -161,7 +164,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   refresh_active_pairs();
   prepare_point_factors();
-  pair_dissipation_.resize(active_.size());
+  pair_dissipation_.resize(upper_index_[n]);
   force_sums_.prepare(n);
   const bool tensile = options_.artificial_stress;
   const bool volume_form = options_.volume_form;
@@ -182,7 +185,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
       Vec<D> acc{};
       double mu_max = 0.0;
       int count = 0;
-      const std::size_t base = active_upper_[i];
+      const std::size_t base = upper_index_[i];
       const auto list = active_upper_neighbours(i);
       for (std::size_t e = 0; e < list.size(); ++e) {
         const std::uint32_t j = list[e];
@@ -295,7 +298,7 @@ void SphSystem<D>::kick(double dt) {
     for (std::size_t i = 0; i < n; ++i) {
       const Vec<D> sum_i = v_old[i] + v_new[i];
       double heat = 0.0;
-      const std::size_t base = active_upper_[i];
+      const std::size_t base = upper_index_[i];
       const auto list = active_upper_neighbours(i);
       for (std::size_t e = 0; e < list.size(); ++e) {
         const std::uint32_t j = list[e];

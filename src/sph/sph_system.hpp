@@ -235,15 +235,15 @@ class SphSystem {
   std::vector<std::uint32_t> active_;
   std::vector<std::size_t> active_offset_;
   std::vector<std::size_t> active_upper_;  // first entry of active list i with j > i
+  std::vector<std::size_t> upper_index_;   // n + 1: start of i's j > i entries among all such entries
   std::vector<Vec<D>> active_x_;           // m, positions at the extraction
   std::vector<double> active_h_;           // m, smoothing lengths at the extraction
   std::int64_t active_builds_ = -1;        // cell-list build it was extracted from (-1: none)
   double active_skin_ = 0.0;               // m, the thin skin asked for
   double active_margin_ = 0.0;             // m, the skin of the current extraction (<= active_skin_)
-  // Per upper active entry (j > i): Pi_ij grad W - f^n (R_i + R_j) . grad W, the
-  // viscous and artificial-stress part of the pair force of the last force_pass()
-  // per unit mass product, whose work kick() books as heat without evaluating
-  // the kernel again.
+  // Per upper active entry (j > i; entry e of i at upper_index_[i] + e): Pi_ij grad W - f^n (R_i + R_j) .
+  // grad W, the viscous and artificial-stress part of the pair force of the last force_pass() per unit mass
+  // product, whose work kick() books as heat without evaluating the kernel again.
   std::vector<Vec<D>> pair_dissipation_;
   // Per-thread sums of the pair-symmetric loops (thread_sums.hpp).
   struct ForceSum {

@@ -10,9 +10,10 @@
 // asks needs_rebuild() each cycle; rebuilding is O(N): particles are sorted by
 // cell with a counting sort and only the 3^D surrounding cells are searched.
 //
-// Lists are full (both i->j and j->i) so that every particle sums its own
-// neighbours: no write conflicts under OpenMP. Only the first n_owned points
-// get lists; points after them (ghosts) are candidates only.
+// Lists are full (both i->j and j->i) and sorted by j. The pair sums of
+// SphSystem run over a thin-skin sub-list of them, each particle pair once
+// (the j > i part), scattering into per-thread sums (sph_sums.cpp). Only the
+// first n_owned points get lists; points after them (ghosts) are candidates only.
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -60,6 +60,11 @@ SymTensor artificial_stress<2>(const SymTensor& s, double epsilon, double scale)
 
 template <>
 SymTensor artificial_stress<3>(const SymTensor& s, double epsilon, double scale) {
+  // No tensile principal stress when every Gershgorin disc lies in sigma <= 0
+  // (a compressed particle): R = 0 without the eigen-decomposition.
+  if (s.xx + std::abs(s.xy) + std::abs(s.zx) <= 0.0 && s.yy + std::abs(s.xy) + std::abs(s.yz) <= 0.0 &&
+      s.zz + std::abs(s.zx) + std::abs(s.yz) <= 0.0)
+    return {};
   double values[3], q[3][3];
   symmetric_eigen(s, values, q);
   double r_principal[3];

@@ -79,6 +79,52 @@ struct Kernel {
     const double t = 1.0 - 0.5 * q;
     return -s * 5.0 * t * t * t;
   }
+
+  // Shape w(q) = W(r, h) h^D / C (C: the constant of normalisation(h)): the
+  // ratio W(r, h) / W(r', h) of two distances at one h is w(q) / w(q').
+  double shape(double q) const {
+    if (q >= 2.0) return 0.0;
+    if (kind == KernelKind::cubic_spline) {
+      if (q < 1.0) return 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+      const double t = 2.0 - q;
+      return 0.25 * t * t * t;
+    }
+    const double t = 1.0 - 0.5 * q;
+    return t * t * t * t * (2.0 * q + 1.0);
+  }
+
+  // What the pair sums need of one pair inside the support (r < 2h), from one
+  // evaluation: gradient_factor(r, h) and shape(r / h). Written for the inner
+  // loop: 1/h is given, one division (the outer cubic shell's 1/q) and no
+  // data-dependent branch (both cubic pieces are evaluated and one selected).
+  struct PairTerms {
+    double gradient_factor;  // (dW/dr)/r, 1/m^(D+2)
+    double shape;            // w(q), dimensionless
+  };
+  PairTerms pair_terms(double r, double inv_h) const {
+    const double q = r * inv_h;
+    const double ih2 = inv_h * inv_h;
+    const double s = unit_normalisation() * (D == 2 ? ih2 * ih2 : ih2 * ih2 * inv_h);  // C / h^(D+2)
+    if (kind == KernelKind::cubic_spline) {
+      const double t = 2.0 - q;
+      const bool inner = q < 1.0;
+      const double g_inner = -3.0 + 2.25 * q;
+      const double g_outer = -0.75 * t * t / q;
+      const double w_inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+      const double w_outer = 0.25 * t * t * t;
+      return {s * (inner ? g_inner : g_outer), inner ? w_inner : w_outer};
+    }
+    const double t = 1.0 - 0.5 * q;
+    const double t3 = t * t * t;
+    return {-s * 5.0 * t3, t3 * t * (2.0 * q + 1.0)};
+  }
+
+  // C of normalisation(h) = C / h^D.
+  double unit_normalisation() const {
+    const double pi = std::numbers::pi;
+    if (kind == KernelKind::cubic_spline) return D == 2 ? 10.0 / (7.0 * pi) : 1.0 / pi;
+    return D == 2 ? 7.0 / (4.0 * pi) : 21.0 / (16.0 * pi);
+  }
 };
 
 // Symmetric pair smoothing length, so that the pair force is antisymmetric and

@@ -152,12 +152,18 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
 template <int D>
 bool NeighbourSearch<D>::needs_rebuild(std::span<const Vec<D>> x, std::span<const double> h) const {
   if (x.size() != x_build_.size() || builds_ == 0) return true;
+  return skin_used(x, h) > skin_;
+}
+
+template <int D>
+double NeighbourSearch<D>::skin_used(std::span<const Vec<D>> x, std::span<const double> h) const {
+  if (x.size() != x_build_.size() || builds_ == 0) return std::numeric_limits<double>::infinity();
   double d2_max = 0.0, dh_max = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     d2_max = std::max(d2_max, squared_distance(x[i], x_build_[i]));
     dh_max = std::max(dh_max, h[i] - h_build_[i]);
   }
-  return 2.0 * std::sqrt(d2_max) + support_factor * dh_max > skin_;
+  return 2.0 * std::sqrt(d2_max) + support_factor * dh_max;
 }
 
 template <int D>

@@ -10,9 +10,10 @@
 // asks needs_rebuild() each cycle; rebuilding is O(N): particles are sorted by
 // cell with a counting sort and only the 3^D surrounding cells are searched.
 //
-// Lists are full (both i->j and j->i) so that every particle sums its own
-// neighbours: no write conflicts under OpenMP. Only the first n_owned points
-// get lists; points after them (ghosts) are candidates only.
+// Lists are full (both i->j and j->i) and sorted by j. The pair sums of
+// SphSystem run over a thin-skin sub-list of them, each particle pair once
+// (the j > i part), scattering into per-thread sums (sph_sums.cpp). Only the
+// first n_owned points get lists; points after them (ghosts) are candidates only.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -30,6 +31,10 @@ class NeighbourSearch {
 
   // True when a particle may have entered another's support since the build.
   bool needs_rebuild(std::span<const Vec<D>> x, std::span<const double> h) const;
+  // How much of the skin the motion since the build has used (m):
+  // 2 max|x - x_build| + 2 max(h - h_build); the lists hold every pair with
+  // |x_i - x_j| < 2 h_ij + skin() - skin_used(x, h).
+  double skin_used(std::span<const Vec<D>> x, std::span<const double> h) const;
 
   std::span<const std::uint32_t> neighbours(std::size_t i) const {
     return {list_.data() + offset_[i], offset_[i + 1] - offset_[i]};

@@ -2,6 +2,7 @@
 // position update with optional XSPH, and the kinematics that feed the shared
 // material update.
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +52,6 @@ void SphSystem<D>::compute_accelerations() {
   if (options_.sort_interval > 0 && search_.builds() - builds_at_sort_ >= options_.sort_interval)
     sort_by_cell();
   const std::size_t n = p_.real;
-  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   if (options_.artificial_stress) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
@@ -62,55 +62,201 @@ void SphSystem<D>::compute_accelerations() {
   }
   prepare_neighbours();
   if (options_.kernel_correction && !correction_current_) compute_correction();
+  force_pass(true);
+}
 
+template <int D>
+void SphSystem<D>::prepare_point_factors() {
+  const std::size_t total = p_.position.size();
+  inverse_density_.resize(total);
+  point_volume_.resize(total);
+  has_tensile_.resize(total);
+  const bool tensile = options_.artificial_stress;
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < total; ++k) {
+    inverse_density_[k] = 1.0 / p_.planar_density[k];
+    point_volume_[k] = p_.mass[k] / p_.planar_density[k];
+    const SymTensor& r = p_.tensile_term[k];
+    has_tensile_[k] =
+        tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
+  }
+}
+
+namespace {
+
+// f^n with n a small integer by repeated products (n = 4 by default), else std::pow.
+inline double tensile_weight(double f, double power, int integer_power) {
+  if (integer_power == 0) return std::pow(f, power);
+  double fn = f;
+  for (int k = 1; k < integer_power; ++k) fn *= f;
+  return fn;
+}
+
+}  // namespace
+
+template <int D>
+void SphSystem<D>::refresh_active_pairs() {
+  const std::size_t n = p_.real, total = p_.position.size();
+  const auto& x = p_.position;
+  const auto& h = p_.smoothing_length;
+  if (active_builds_ == search_.builds() && active_x_.size() == total) {
+    // Same criterion as NeighbourSearch::needs_rebuild, against the extraction.
+    double d2_max = 0.0, dh_max = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : d2_max, dh_max)
+    for (std::size_t k = 0; k < total; ++k) {
+      const Vec<D> d = x[k] - active_x_[k];
+      d2_max = std::max(d2_max, dot(d, d));
+      dh_max = std::max(dh_max, h[k] - active_h_[k]);
+    }
+    if (2.0 * std::sqrt(d2_max) + support_factor * dh_max <= active_margin_) return;
+  }
+  active_builds_ = search_.builds();
+  ++active_extractions_;
+  active_x_.assign(x.begin(), x.end());
+  active_h_.assign(h.begin(), h.end());
+  active_offset_.assign(n + 1, 0);
+  // The cell lists hold every pair within 2 h_ij + (their skin - the part of it used):
+  // the thin skin can be no wider than that.
+  const double skin = std::max(0.0, std::min(active_skin_, search_.skin() - search_.skin_used(x, h)));
+  active_margin_ = skin;
+  auto inside = [&](std::size_t i, std::uint32_t j) {
+    const Vec<D> dx = x[i] - x[j];
+    const double reach = support_factor * pair_smoothing_length(h[i], h[j]) + skin;
+    return dot(dx, dx) < reach * reach;
+  };
+  // Two passes (count, then fill) so that each thread writes its own slots.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t count = 0;
+    for (const std::uint32_t j : search_.neighbours(i)) count += inside(i, j) ? 1 : 0;
+    active_offset_[i + 1] = count;
+  }
+  for (std::size_t i = 0; i < n; ++i) active_offset_[i + 1] += active_offset_[i];
+  active_.resize(active_offset_[n]);
+  active_upper_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t k = active_offset_[i];
+    for (const std::uint32_t j : search_.neighbours(i))
+      if (inside(i, j)) active_[k++] = j;
+    const auto first = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i]);
+    const auto last = active_.begin() + static_cast<std::ptrdiff_t>(k);
+    active_upper_[i] = static_cast<std::size_t>(std::upper_bound(first, last, static_cast<std::uint32_t>(i)) -
+                                                active_.begin());
+  }
+  upper_index_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    upper_index_[i + 1] = upper_index_[i] + (active_offset_[i + 1] - active_upper_[i]);
+}
+
+template <int D>
+void SphSystem<D>::force_pass(bool write_rates) {
+  // The momentum sum of sph_system.hpp, pair-symmetric: each pair of
+  // particles is evaluated once (j > i) and gives m_j F_ij to i and -m_i F_ij
+  // to j, with the pair force per unit mass product
+  //   F_ij = (S_i / eta_j + S_j / eta_i) . grad W - d_ij     (volume form)
+  //   F_ij = (S_i / eta_i + S_j / eta_j) . grad W - d_ij     (density form)
+  //   d_ij = Pi_ij grad W - f^n (R_i + R_j) . grad W,
+  // antisymmetric in (i, j) because grad_j W_ji = -grad_i W_ij. Pairs with
+  // ghosts and coupling points count for i only. d_ij is stored per pair for
+  // the viscous and artificial-stress heating of kick().
+  const std::size_t n = p_.real;
+  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
+  refresh_active_pairs();
+  prepare_point_factors();
+  pair_dissipation_.resize(upper_index_[n]);
+  force_sums_.prepare(n);
   const bool tensile = options_.artificial_stress;
   const bool volume_form = options_.volume_form;
+  const bool switched = options_.viscosity_switch;
   const double power = options_.artificial_stress_power;
-  const double factor = options_.smoothing_factor;
   const auto& x = p_.position;
   const auto& v = p_.velocity;
   const auto& m = p_.mass;
   const auto& eta = p_.planar_density;
   const auto& h = p_.smoothing_length;
-#pragma omp parallel for schedule(dynamic, 128)
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec<D> acc{};
-    double mu_max = 0.0;
-    int count = 0;
-    for (const std::uint32_t j : search_.neighbours(i)) {
-      const Vec<D> dx = x[i] - x[j];
-      const double r2 = dot(dx, dx);
-      const double hij = pair_smoothing_length(h[i], h[j]);
-      if (r2 >= support_factor * support_factor * hij * hij) continue;
-      ++count;
-      const double r = std::sqrt(r2);
-      const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(r, hij));
-      const Vec<D> dv = v[i] - v[j];
-      const double vr = dot(dv, dx);
-      double pi_ij = 0.0;
-      if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
-        const double mu = hij * vr / (r2 + 0.01 * hij * hij);
-        const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-        const PairViscosity q = pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]);
-        pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
-        mu_max = std::max(mu_max, -mu);
+  const auto& inv_eta = inverse_density_;
+  const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
+#pragma omp parallel
+  {
+    ForceSum* own = force_sums_.own_zeroed();
+#pragma omp for schedule(static, 256)
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec<D> acc{};
+      double mu_max = 0.0;
+      int count = 0;
+      const std::size_t base = upper_index_[i];
+      const auto list = active_upper_neighbours(i);
+      for (std::size_t e = 0; e < list.size(); ++e) {
+        const std::uint32_t j = list[e];
+        const Vec<D> dx = x[i] - x[j];
+        const double r2 = dot(dx, dx);
+        const double hij = pair_smoothing_length(h[i], h[j]);
+        if (r2 >= support_factor * support_factor * hij * hij) {
+          pair_dissipation_[base + e] = Vec<D>{};
+          continue;
+        }
+        const double inv_h = 1.0 / hij;
+        const double r = std::sqrt(r2);
+        const auto w = kernel_.pair_terms(r, inv_h);
+        const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
+        const Vec<D> dv = v[i] - v[j];
+        const double vr = dot(dv, dx);
+        Vec<D> dissipation{};
+        double mu = 0.0;
+        if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
+          mu = hij * vr / (r2 + 0.01 * hij * hij);
+          const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+          const PairViscosity q =
+              switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
+          const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+          mu_max = std::max(mu_max, -mu);
+          dissipation = grad * pi_ij;
+        }
+        if (tensile && (has_tensile_[i] | has_tensile_[j])) {
+          const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
+          dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
+        }
+        pair_dissipation_[base + e] = dissipation;
+        // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
+        const SymTensor pair = volume_form ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
+                                           : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
+        const Vec<D> force = apply<D>(pair, grad) - dissipation;
+        acc += force * m[j];
+        ++count;
+        if (j < n) {
+          ForceSum& other = own[j];
+          other.acceleration -= force * m[i];
+          other.compression_rate = std::max(other.compression_rate, -mu);
+          ++other.count;
+        }
       }
-      // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
-      SymTensor pair = volume_form ? p_.stress_term[i] * (1.0 / eta[j]) + p_.stress_term[j] * (1.0 / eta[i])
-                                   : p_.stress_term[i] * (1.0 / eta[i]) + p_.stress_term[j] * (1.0 / eta[j]);
-      if (tensile) {
-        const double dp = hij / factor;  // current particle spacing
-        const double f = kernel_.value(r, hij) / kernel_.value(dp, hij);
-        pair += (p_.tensile_term[i] + p_.tensile_term[j]) * std::pow(f, power);
-      }
-      acc += (apply<D>(pair, grad) - grad * pi_ij) * m[j];
+      ForceSum& mine = own[i];
+      mine.acceleration += acc;
+      mine.compression_rate = std::max(mine.compression_rate, mu_max);
+      mine.count += count;
     }
-    if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
-      acc[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
-    p_.acceleration[i] = acc;
-    p_.compression_rate[i] = mu_max;
-    p_.neighbour_count[i] = count;
+    if (write_rates) {
+      const int team = omp_get_num_threads();
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        ForceSum total = force_sums_.at(0, i);
+        for (int t = 1; t < team; ++t) {
+          const ForceSum& part = force_sums_.at(t, i);
+          total.acceleration += part.acceleration;
+          total.compression_rate = std::max(total.compression_rate, part.compression_rate);
+          total.count += part.count;
+        }
+        if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
+          total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
+        p_.acceleration[i] = total.acceleration;
+        p_.compression_rate[i] = total.compression_rate;
+        p_.neighbour_count[i] = total.count;
+      }
+    }
   }
+  pair_dissipation_current_ = true;
+  pair_dissipation_extraction_ = active_extractions_;
 }
 
 template <int D>
@@ -120,89 +266,99 @@ void SphSystem<D>::kick(double dt) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p_.velocity[i] += p_.acceleration[i] * dt;
   refresh_ghosts();
+  // After a restart between the force stage and the kick the pair terms are not stored:
+  // the force pass at the same x(n), v(n-1/2) gives them again, bit for bit.
+  if (!pair_dissipation_current_ || pair_dissipation_extraction_ != active_extractions_) {
+    std::vector<Vec<D>> v_new(p_.velocity);
+    p_.velocity = velocity_old_;
+    force_pass(false);
+    p_.velocity = std::move(v_new);
+  }
 
   // Viscous heating of this impulse: the kinetic energy the viscous pair forces
   // (evaluated with v(n-1/2) at x(n)) take out over the kick is
   // 1/2 sum_ij m_i m_j Pi_ij vbar_ij . grad W dt with vbar the mean of the old
   // and new velocities; each particle gets its half (Monaghan 1992, eq. 4.6)
   // with that same mean velocity, so the exchange is exact.
-  const auto& x = p_.position;
-  const auto& m = p_.mass;
-  const auto& eta = p_.planar_density;
-  const auto& h = p_.smoothing_length;
-  const auto& v_old = velocity_old_;
-  const auto& v_new = p_.velocity;
   // The artificial stress is a pair force T_ij . grad W with T_ij = f^n (R_i + R_j)
   // that no constitutive law books: its work is booked the same way, as
   // de_i = -1/2 sum_j m_j vbar_ij . T_ij . grad W dt, so that kinetic +
   // internal energy stays conserved (it is reversible over a tension cycle;
-  // docs/theory/sph.md).
-  const bool tensile = options_.artificial_stress;
-  const double power = options_.artificial_stress_power, factor = options_.smoothing_factor;
-  // Artificial conductivity (SphOptions::conductivity): specific energy,
-  // pressure, density and EOS family of every point, ghosts as their sources;
-  // coupling points (FEM) take no part.
-  const double alpha_u = options_.conductivity;
-  const bool conduct = alpha_u > 0.0;
-  std::vector<double> u, pressure, rho;
-  std::vector<int> family;
-  const std::size_t mirrored = n + ghosts_.size();
-  if (conduct) {
-    u.resize(mirrored);
-    pressure.resize(mirrored);
-    rho.resize(mirrored);
-    family.resize(mirrored);
+  // docs/theory/sph.md). Both are the stored d_ij of force_pass(): the pair
+  // gives de_i = 1/2 m_j d_ij . vbar_ij dt and de_j = 1/2 m_i d_ij . vbar_ij dt.
+  const auto& v_old = velocity_old_;
+  const auto& v_new = p_.velocity;
+  const auto& m = p_.mass;
+  const auto& d = pair_dissipation_;
+  heat_sums_.prepare(n);
+#pragma omp parallel
+  {
+    double* own = heat_sums_.own_zeroed();
+#pragma omp for schedule(static, 256)
     for (std::size_t i = 0; i < n; ++i) {
-      u[i] = batches_[p_.material[i]].specific_energy[p_.slot[i]];
-      pressure[i] = p_.pressure[i];
-      rho[i] = p_.density[i];
-      family[i] = eos_family_[p_.material[i]];
+      const Vec<D> sum_i = v_old[i] + v_new[i];
+      double heat = 0.0;
+      const std::size_t base = upper_index_[i];
+      const auto list = active_upper_neighbours(i);
+      for (std::size_t e = 0; e < list.size(); ++e) {
+        const std::uint32_t j = list[e];
+        const double work = dot(d[base + e], sum_i - (v_old[j] + v_new[j]));  // 2 d_ij . vbar_ij
+        heat += work * m[j];
+        if (j < n) own[j] += work * m[i];
+      }
+      own[i] += heat;
     }
-    for (std::size_t g = 0; g < ghosts_.size(); ++g) {
-      const std::size_t s = ghosts_[g].source;
-      u[n + g] = u[s], pressure[n + g] = pressure[s], rho[n + g] = rho[s], family[n + g] = family[s];
+    const int team = omp_get_num_threads();
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      double heat = heat_sums_.at(0, i);
+      for (int t = 1; t < team; ++t) heat += heat_sums_.at(t, i);
+      p_.heating[i] += 0.25 * heat * dt;
     }
+  }
+  if (options_.conductivity > 0.0) conduct_heat(dt);
+}
+
+// Artificial conductivity (SphOptions::conductivity; Price 2008, eqs. 28 and
+// 30): between particles of one EOS family, ghosts as their sources; coupling
+// points (FEM) take no part. With the planar density of the SPH sums (eta,
+// ring mass in r-z) and dW/dr < 0, heat flows from i to j when u_i > u_j, and
+// m_i du_i = -m_j du_j pair by pair. A gather over the full neighbour list:
+// it is off by default and not on the hot path of the cycle.
+template <int D>
+void SphSystem<D>::conduct_heat(double dt) {
+  const std::size_t n = p_.real;
+  const std::size_t mirrored = n + ghosts_.size();
+  const auto& x = p_.position;
+  const auto& m = p_.mass;
+  const auto& eta = p_.planar_density;
+  const auto& h = p_.smoothing_length;
+  const double alpha_u = options_.conductivity;
+  std::vector<double> u(mirrored), pressure(mirrored), rho(mirrored);
+  std::vector<int> family(mirrored);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[i] = batches_[p_.material[i]].specific_energy[p_.slot[i]];
+    pressure[i] = p_.pressure[i];
+    rho[i] = p_.density[i];
+    family[i] = eos_family_[p_.material[i]];
+  }
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+    const std::size_t s = ghosts_[g].source;
+    u[n + g] = u[s], pressure[n + g] = pressure[s], rho[n + g] = rho[s], family[n + g] = family[s];
   }
 #pragma omp parallel for schedule(dynamic, 128)
   for (std::size_t i = 0; i < n; ++i) {
     double heat = 0.0;
     for (const std::uint32_t j : search_.neighbours(i)) {
+      if (j >= mirrored || family[j] != family[i] || u[i] == u[j]) continue;
       const Vec<D> dx = x[i] - x[j];
       const double r2 = dot(dx, dx);
       const double hij = pair_smoothing_length(h[i], h[j]);
       if (r2 >= support_factor * support_factor * hij * hij) continue;
-      const Vec<D> dv = v_old[i] - v_old[j];
-      const double vr = dot(dv, dx);
-      if (vr >= 0.0 && !tensile && !conduct) continue;
       const double r = std::sqrt(r2);
-      if (conduct && j < mirrored && family[j] == family[i] && u[i] != u[j]) {
-        // Price (2008), eqs. 28 and 30, with the planar density of the SPH
-        // sums (eta, ring mass in r-z) and dW/dr < 0: heat flows from i to j
-        // when u_i > u_j, and m_i du_i = -m_j du_j pair by pair.
-        const double rho_ij = 0.5 * (rho[i] + rho[j]);
-        const double v_sig = std::sqrt(std::abs(pressure[i] - pressure[j]) / rho_ij);
-        heat +=
-            m[j] * alpha_u * v_sig * (u[i] - u[j]) / (0.5 * (eta[i] + eta[j])) * kernel_.derivative(r, hij);
-      }
-      if (vr >= 0.0 && !tensile) continue;
-      const Vec<D> grad = pair_gradient(i, j, dx * kernel_.gradient_factor(r, hij));
-      const Vec<D> mean_dv = (dv + (v_new[i] - v_new[j])) * 0.5;
-      if (vr < 0.0) {
-        const double mu = hij * vr / (r2 + 0.01 * hij * hij);
-        const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-        const PairViscosity q = pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]);
-        const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
-        heat += 0.5 * m[j] * pi_ij * dot(mean_dv, grad);
-      }
-      if (tensile) {
-        const SymTensor& ri = p_.tensile_term[i];
-        const SymTensor& rj = p_.tensile_term[j];
-        if (ri.xx == 0.0 && ri.yy == 0.0 && ri.xy == 0.0 && rj.xx == 0.0 && rj.yy == 0.0 && rj.xy == 0.0 &&
-            ri.zz == 0.0 && rj.zz == 0.0)
-          continue;
-        const double f = kernel_.value(r, hij) / kernel_.value(hij / factor, hij);
-        heat -= 0.5 * m[j] * std::pow(f, power) * dot(mean_dv, apply<D>(ri + rj, grad));
-      }
+      const double rho_ij = 0.5 * (rho[i] + rho[j]);
+      const double v_sig = std::sqrt(std::abs(pressure[i] - pressure[j]) / rho_ij);
+      heat += m[j] * alpha_u * v_sig * (u[i] - u[j]) / (0.5 * (eta[i] + eta[j])) * kernel_.derivative(r, hij);
     }
     p_.heating[i] += heat * dt;
   }
@@ -212,6 +368,7 @@ template <int D>
 void SphSystem<D>::drift(double dt) {
   const std::size_t n = p_.real;
   correction_current_ = false;
+  pair_dissipation_current_ = false;
   // The XSPH shift exists only when asked for: no allocation in the default cycle.
   std::vector<Vec<D>> shift;
   if (options_.xsph > 0.0) {
@@ -314,62 +471,106 @@ void SphSystem<D>::update_state(double dt, double time) {
   refresh_ghosts();
   const bool corrected = options_.kernel_correction;
   if (corrected) compute_correction();
-#pragma omp parallel for schedule(dynamic, 128)
-  for (std::size_t i = 0; i < n; ++i) {
-    double eta_rate = 0.0;
-    double L[3][3] = {};
-    for (const std::uint32_t j : search_.neighbours(i)) {
-      const Vec<D> dx = x[i] - x[j];
-      const double r2 = dot(dx, dx);
-      const double hij = pair_smoothing_length(h[i], h[j]);
-      if (r2 >= support_factor * support_factor * hij * hij) continue;
-      const Vec<D> grad = dx * kernel_.gradient_factor(std::sqrt(r2), hij);
-      const Vec<D> dv = v[i] - v[j];
-      // Volume form: weights V_j = m_j / eta_j (times eta_i for the rate); density form: m_j / eta_i.
-      const double weight = options_.volume_form ? m[j] / eta[j] : m[j] / eta[i];
-      if (corrected) {
-        // Continuity with the pair gradient of the momentum sum (conjugate);
-        // L with particle i's own correction, exact for linear fields.
-        eta_rate += weight * dot(dv, pair_gradient(i, j, grad));
-        const Vec<D> own = apply<D>(p_.correction[i], grad);
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) L[a][b] -= weight * dv[a] * own[b];
-      } else {
-        eta_rate += weight * dot(dv, grad);
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) L[a][b] -= weight * dv[a] * grad[b];
+  refresh_active_pairs();
+  prepare_point_factors();
+  const bool volume_form = options_.volume_form;
+  const auto& volume = point_volume_;
+  const auto& inv_eta = inverse_density_;
+  // Pair-symmetric like force_pass(): v_ji (x) grad_j W_ji = v_ij (x) grad_i W_ij, so each
+  // pair of particles is evaluated once and adds to both with its own weight
+  // (volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j).
+  kinematic_sums_.prepare(n);
+#pragma omp parallel
+  {
+    KinematicSum* own = kinematic_sums_.own_zeroed();
+#pragma omp for schedule(static, 256)
+    for (std::size_t i = 0; i < n; ++i) {
+      KinematicSum mine;
+      for (const std::uint32_t j : active_upper_neighbours(i)) {
+        const Vec<D> dx = x[i] - x[j];
+        const double r2 = dot(dx, dx);
+        const double hij = pair_smoothing_length(h[i], h[j]);
+        if (r2 >= support_factor * support_factor * hij * hij) continue;
+        const Vec<D> grad = dx * kernel_.pair_terms(std::sqrt(r2), 1.0 / hij).gradient_factor;
+        const Vec<D> dv = v[i] - v[j];
+        const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
+        const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
+        const bool both = j < n;
+        if (corrected) {
+          // Continuity with the pair gradient of the momentum sum (conjugate);
+          // L with each particle's own correction, exact for linear fields.
+          const double rate = dot(dv, pair_gradient(i, j, grad));
+          const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
+          mine.rate += weight_i * rate;
+          for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
+          if (both) {
+            const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
+            own[j].rate += weight_j * rate;
+            for (int a = 0; a < D; ++a)
+              for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
+          }
+        } else {
+          const double rate = dot(dv, grad);
+          mine.rate += weight_i * rate;
+          for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * grad[b];
+          if (both) {
+            own[j].rate += weight_j * rate;
+            for (int a = 0; a < D; ++a)
+              for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * grad[b];
+          }
+        }
       }
+      own[i].rate += mine.rate;
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
     }
-    // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
-    // matches the momentum sum (energy-consistent).
-    if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
-    SymTensor d{L[0][0],
-                L[1][1],
-                L[2][2],
-                0.5 * (L[0][1] + L[1][0]),
-                0.5 * (L[1][2] + L[2][1]),
-                0.5 * (L[2][0] + L[0][2])};
-    p_.strain_rate[i] = d;
-    if (options_.viscosity_switch) {
-      // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
-      // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
-      const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
-      const double source = std::max(-d.trace(), 0.0);
-      const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
-      const double b = 1.0 / tau + source;
-      const double target = a / b;
-      p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
+    const int team = omp_get_num_threads();
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      KinematicSum total = kinematic_sums_.at(0, i);
+      for (int t = 1; t < team; ++t) {
+        const KinematicSum& part = kinematic_sums_.at(t, i);
+        total.rate += part.rate;
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
+      }
+      const double eta_rate = total.rate;
+      double L[3][3] = {};
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
+      // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
+      // matches the momentum sum (energy-consistent).
+      if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
+      SymTensor d{L[0][0],
+                  L[1][1],
+                  L[2][2],
+                  0.5 * (L[0][1] + L[1][0]),
+                  0.5 * (L[1][2] + L[2][1]),
+                  0.5 * (L[2][0] + L[0][2])};
+      p_.strain_rate[i] = d;
+      if (options_.viscosity_switch) {
+        // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
+        // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
+        const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
+        const double source = std::max(-d.trace(), 0.0);
+        const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
+        const double b = 1.0 / tau + source;
+        const double target = a / b;
+        p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
+      }
+      p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
+      // Continuity, integrated as d ln(eta) so that eta stays positive.
+      eta_new[i] = eta[i] * std::exp(dt * eta_rate);
+      double hi = h[i];
+      if (options_.variable_smoothing_length) {
+        const double h0 = p_.reference_smoothing_length[i];
+        hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
+        hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
+      }
+      h_new[i] = hi;
     }
-    p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
-    // Continuity, integrated as d ln(eta) so that eta stays positive.
-    eta_new[i] = eta[i] * std::exp(dt * eta_rate);
-    double hi = h[i];
-    if (options_.variable_smoothing_length) {
-      const double h0 = p_.reference_smoothing_length[i];
-      hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
-      hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
-    }
-    h_new[i] = hi;
   }
 
   for (std::size_t i = 0; i < n; ++i) {
@@ -379,6 +580,7 @@ void SphSystem<D>::update_state(double dt, double time) {
   }
   refresh_ghosts();
   correction_current_ = false;
+  pair_dissipation_current_ = false;
 
   // The shared constitutive update, one batch per material.
   const MaterialContext ctx{dt, time};
@@ -408,6 +610,12 @@ void SphSystem<D>::update_state(double dt, double time) {
 // The class itself is instantiated in sph_system.cpp; these are its members defined here.
 template void SphSystem<2>::compute_correction();
 template void SphSystem<3>::compute_correction();
+template void SphSystem<2>::refresh_active_pairs();
+template void SphSystem<3>::refresh_active_pairs();
+template void SphSystem<2>::force_pass(bool);
+template void SphSystem<3>::force_pass(bool);
+template void SphSystem<2>::prepare_point_factors();
+template void SphSystem<3>::prepare_point_factors();
 template void SphSystem<2>::compute_accelerations();
 template void SphSystem<3>::compute_accelerations();
 template void SphSystem<2>::kick(double);

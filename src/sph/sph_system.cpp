@@ -26,6 +26,12 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   if (model.particles.coordinates.size() != D * model.particles.count())
     throw std::invalid_argument("SphSystem: particle coordinates do not match the dimension");
   kernel_.kind = options_.kernel;
+  // Artificial stress weight f^n, f = W(r, h_ij) / W(dp, h_ij) with dp = h_ij / smoothing_factor:
+  // the normalisation cancels, f = w(r / h_ij) / w(1 / smoothing_factor).
+  tensile_shape_inverse_ = 1.0 / kernel_.shape(1.0 / options_.smoothing_factor);
+  const double power = options_.artificial_stress_power;
+  if (power >= 1.0 && power <= 8.0 && power == std::floor(power))
+    tensile_power_integer_ = static_cast<int>(power);
   // The axis of revolution r = 0 reflects particles (mirror_boundary.hpp).
   if (mode_ == GeometryMode::axisymmetric)
     planes_.insert(planes_.begin(), MirrorPlane{0, 0.0, PlaneKind::symmetry});
@@ -120,6 +126,7 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
     h_min = std::min(h_min, p_.smoothing_length[i]);
   }
   skin_ = n ? options_.skin_factor * h_min : 0.0;
+  active_skin_ = std::min(skin_, n ? 0.1 * h_min : 0.0);
   gather_material_state();
 }
 

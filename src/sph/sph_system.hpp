@@ -53,6 +53,7 @@
 #include "sph/mirror_boundary.hpp"
 #include "sph/neighbour_search.hpp"
 #include "sph/sph_options.hpp"
+#include "sph/thread_sums.hpp"
 
 namespace camouflet::sph {
 
@@ -182,6 +183,12 @@ class SphSystem {
   }
   void refresh_ghosts();
   void gather_material_state();
+  // The momentum sum (compute_accelerations) over the current lists at x(n),
+  // storing per list entry the pair terms kick() books as heat; with
+  // write_rates = false only those are stored (kick() after a restart).
+  void force_pass(bool write_rates);
+  // 1/eta and the volume m/eta of every point (particles, ghosts, coupling points).
+  void prepare_point_factors();
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
 
   GeometryMode mode_;
@@ -203,6 +210,7 @@ class SphSystem {
   // Per material: the first material with the same EOS type; the artificial
   // conductivity only joins particles of one family (SphOptions::conductivity).
   std::vector<int> eos_family_;
+  void conduct_heat(double dt);  // the conductivity's share of kick() (sph_sums.cpp)
   // Copies in id order for fill_snapshot() once the memory order differs.
   struct IdOrderCopy {
     std::vector<Vec<D>> position, displacement, velocity, acceleration;
@@ -211,6 +219,57 @@ class SphSystem {
     std::vector<int> material, neighbour_count;
   };
   mutable IdOrderCopy id_order_;
+  // Second-level pair list (Verlet list of the Verlet list): the entries of
+  // the cell-search lists with |x_i - x_j| < 2 h_ij + active_skin_ when
+  // extracted, in list order. The pair sums run over it: the cell lists carry
+  // a skin of ~0.3 h (rebuilt every ~10 steps), i.e. about twice the pairs
+  // inside the support, while this one is re-extracted (a cheap scan) only
+  // when 2 max|x - x_extracted| + 2 max(h - h_extracted) exceeds its thin skin.
+  // Any list that holds every pair inside the support gives the same sums, bit
+  // for bit: only the skipped pairs differ.
+  void refresh_active_pairs();
+  std::span<const std::uint32_t> active_neighbours(std::size_t i) const {
+    return {active_.data() + active_offset_[i], active_offset_[i + 1] - active_offset_[i]};
+  }
+  // The part with j > i: every pair of particles once, and all of i's pairs
+  // with points that have no sums of their own (ghosts, coupling points).
+  std::span<const std::uint32_t> active_upper_neighbours(std::size_t i) const {
+    return {active_.data() + active_upper_[i], active_offset_[i + 1] - active_upper_[i]};
+  }
+  std::vector<std::uint32_t> active_;
+  std::vector<std::size_t> active_offset_;
+  std::vector<std::size_t> active_upper_;  // first entry of active list i with j > i
+  std::vector<std::size_t> upper_index_;   // n + 1: start of i's j > i entries among all such entries
+  std::vector<Vec<D>> active_x_;           // m, positions at the extraction
+  std::vector<double> active_h_;           // m, smoothing lengths at the extraction
+  std::int64_t active_builds_ = -1;        // cell-list build it was extracted from (-1: none)
+  double active_skin_ = 0.0;               // m, the thin skin asked for
+  double active_margin_ = 0.0;             // m, the skin of the current extraction (<= active_skin_)
+  // Per upper active entry (j > i; entry e of i at upper_index_[i] + e): Pi_ij grad W - f^n (R_i + R_j) .
+  // grad W, the viscous and artificial-stress part of the pair force of the last force_pass() per unit mass
+  // product, whose work kick() books as heat without evaluating the kernel again.
+  std::vector<Vec<D>> pair_dissipation_;
+  // Per-thread sums of the pair-symmetric loops (thread_sums.hpp).
+  struct ForceSum {
+    Vec<D> acceleration{};
+    double compression_rate = 0.0;
+    int count = 0;
+  };
+  struct KinematicSum {
+    double rate = 0.0;    // sum_j weight_j v_ij . grad W
+    double L[D][D] = {};  // -sum_j weight_j v_ij (x) grad W
+  };
+  ThreadSums<ForceSum> force_sums_;
+  ThreadSums<KinematicSum> kinematic_sums_;
+  ThreadSums<double> heat_sums_;
+  bool pair_dissipation_current_ = false;
+  std::int64_t active_extractions_ = 0;            // active-list extractions so far
+  std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to
+  std::vector<double> inverse_density_;            // 1/eta per point, scratch of the pair sums
+  std::vector<double> point_volume_;               // m/eta per point, scratch of the pair sums
+  std::vector<unsigned char> has_tensile_;         // artificial stress R != 0, per point
+  double tensile_shape_inverse_ = 1.0;             // 1 / w(1 / smoothing_factor): W(dp, h) = C w / h^D
+  int tensile_power_integer_ = 0;                  // artificial_stress_power when a small integer, else 0
   std::size_t external_begin_ = 0, external_count_ = 0;  // coupling seam
   ExternalProvider external_provider_;
 };

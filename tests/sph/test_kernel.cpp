@@ -56,6 +56,26 @@ TEST(SphKernel, DerivativeMatchesFiniteDifference) {
   }
 }
 
+TEST(SphKernel, PairTermsMatchTheSeparateEvaluations) {
+  // The fused evaluation of the pair loops (gradient factor and shape from one
+  // q) must be the same function as gradient_factor() and value() / normalisation.
+  for (auto kind : {KernelKind::cubic_spline, KernelKind::wendland_c2}) {
+    Kernel<2> w2{kind};
+    Kernel<3> w3{kind};
+    const double h = 0.37;
+    for (double q = 0.03; q < 2.0; q += 0.07) {
+      const double r = q * h;
+      const auto t2 = w2.pair_terms(r, 1.0 / h);
+      const auto t3 = w3.pair_terms(r, 1.0 / h);
+      EXPECT_NEAR(t2.gradient_factor, w2.gradient_factor(r, h), 1e-13 * std::abs(w2.gradient_factor(r, h)));
+      EXPECT_NEAR(t3.gradient_factor, w3.gradient_factor(r, h), 1e-13 * std::abs(w3.gradient_factor(r, h)));
+      EXPECT_NEAR(t3.shape, w3.value(r, h) / w3.normalisation(h), 1e-13) << to_string(kind) << " q=" << q;
+      EXPECT_NEAR(t2.shape, w2.value(r, h) / w2.normalisation(h), 1e-13) << to_string(kind) << " q=" << q;
+      EXPECT_NEAR(t3.shape, w3.shape(r / h), 1e-13);
+    }
+  }
+}
+
 TEST(SphKernel, LatticeSumsAreConsistent) {
   // On a square lattice of spacing dx with h = 1.2 dx: sum (m/rho) W = 1 (partition of unity)
   // and sum (m/rho) (x_j - x_i) (x) grad_i W = -I... here written as the moment that the

@@ -95,7 +95,6 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "field_interval", s.field_interval, s);
     read(*t, "gauge_interval", s.gauge_interval, s);
     read(*t, "cfl", s.cfl, s);
-    read(*t, "max_dt", s.max_dt, s);
     t->finish();
   }
   if (auto t = root.table("gauges")) {

@@ -155,7 +155,6 @@ void check(const BuriedStructureSpec& s, double a) {
   if (!(s.field_interval >= 0.0)) fail("run.field_interval", "must be >= 0");
   if (!(s.gauge_interval >= 0.0)) fail("run.gauge_interval", "must be >= 0");
   if (!(s.cfl > 0.0 && s.cfl <= 1.0)) fail("run.cfl", fmt::format("must lie in (0, 1], got {}", s.cfl));
-  if (!(s.max_dt >= 0.0)) fail("run.max_dt", fmt::format("must be >= 0 s (0: no cap), got {}", s.max_dt));
   if (s.gauge_count < 2 || s.gauge_count > 100) fail("gauges.count", "must be a whole number from 2 to 100");
   if (2.0 * s.wall_thickness >= std::min(s.box_length, s.box_height))
     fail("structure.wall_thickness", fmt::format("{} m walls leave no room inside a {} m x {} m box",
@@ -425,10 +424,8 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         1e3 * L.reflection_time, s.soil_wave_speed);
 
   fmt::format_to(out,
-                 "title = \"{}\"\n\n[run]\ngeometry = \"axisymmetric\"\nend_time = {}  # s\ncfl = {}\n",
+                 "title = \"{}\"\n\n[run]\ngeometry = \"axisymmetric\"\nend_time = {}  # s\ncfl = {}\n\n",
                  s.title, s.end_time, s.cfl);
-  if (s.max_dt > 0.0) fmt::format_to(out, "max_dt = {}  # s\n", s.max_dt);
-  fmt::format_to(out, "\n");
   fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
                  s.gauge_interval);
   fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,

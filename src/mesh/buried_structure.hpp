@@ -63,7 +63,6 @@ struct BuriedStructureSpec {
   double field_interval = 0.005;  // s
   double gauge_interval = 2e-5;   // s
   double cfl = 0.6;
-  double max_dt = 0.0;  // s, cap on the time step (0: none); docs/buried-structure.md, "Energy balance"
   int gauge_count = 10;  // gauges per soil group (A and B)
 
   // Where each key was read (for errors naming it); keys absent fall back to `source`.

@@ -417,9 +417,10 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
       }
       const double mm = p.mass[i] * p.mass[j];
       const Vec<D> force = (apply<D>(own + other, grad) - grad * pi_ij) * mm;  // on particle i
-      pairs_.push_back({i, j, apply<D>(other, grad) * mm, grad * (mm * pi_ij), dv});
-      Vec<D> reaction = force * -1.0;
       const Point& pt = points_[j - begin];
+      pairs_.push_back({i, j, apply<D>(other, grad) * mm, grad * (mm * pi_ij), dv, force,
+                        p.velocity[j] - face_velocity(pt)});
+      Vec<D> reaction = force * -1.0;
       for (int m = 0; m < pt.image_count; ++m) {
         const int axis = planes_[pt.planes[static_cast<std::size_t>(m)]].axis;
         reaction[axis] = -reaction[axis];
@@ -433,6 +434,18 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
 }
 
 template <int D>
+Vec<D> SphFemJoin<D>::face_velocity(const Point& point) const {
+  Vec<D> v{};
+  for (const std::int64_t n : faces_[point.face])
+    for (int d = 0; d < D; ++d) v[d] += v_[n * D + d] / face_nodes;
+  for (int m = 0; m < point.image_count; ++m) {  // the image's face moves as the mirrored face
+    const int axis = planes_[point.planes[static_cast<std::size_t>(m)]].axis;
+    v[axis] = -v[axis];
+  }
+  return v;
+}
+
+template <int D>
 double SphFemJoin<D>::settle(const sph::SphSystem<D>& particles, double dt,
                              std::vector<MaterialPoints>& batches) {
   // After the kick: the pair velocities v(n+1/2) are known, so the work of the pair forces of
@@ -441,10 +454,16 @@ double SphFemJoin<D>::settle(const sph::SphSystem<D>& particles, double dt,
   const auto& p = particles.particles();
   const std::size_t begin = particles.external_begin();
   double join_work = 0.0;
+  face_offset_work_ = 0.0;
   for (const Pair& pair : pairs_) {
     const Vec<D> dv = (pair.dv_old + (p.velocity[pair.i] - p.velocity[pair.j])) * 0.5;
-    // The element-side part of the conservative pair work: no internal energy books it.
+    // The element-side part of the conservative pair work: no internal energy books it. Nor the
+    // work of the whole pair force through the offset between the coupling point (v_j, which the
+    // sums see) and the face that takes the reaction (v_face, which the FEM moves).
     join_work += dot(pair.other, dv) * dt;
+    const Vec<D> offset_new = p.velocity[pair.j] - face_velocity(points_[pair.j - begin]);
+    const Vec<D> offset = (pair.offset_old + offset_new) * 0.5;
+    face_offset_work_ += dot(pair.force, offset) * dt;
     // Viscous heat: the particle took half (kick); the element behind the coupling point takes
     // the other half, so the viscosity converts kinetic into internal energy without loss.
     const double heat = 0.5 * dot(pair.viscous, dv) * dt;  // J, >= 0 for an approaching pair
@@ -452,7 +471,7 @@ double SphFemJoin<D>::settle(const sph::SphSystem<D>& particles, double dt,
     batches[static_cast<std::size_t>(elements_->material[e])].specific_energy[elements_->point[e]] +=
         heat / elements_->mass[e];
   }
-  return join_work;
+  return join_work + face_offset_work_;
 }
 
 template class SphFemJoin<2>;

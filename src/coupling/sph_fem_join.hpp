@@ -33,11 +33,13 @@
 // sigma across a plane, the FEM sigma; docs/theory/coupling.md). Energy:
 // particle i books the part of the pair work conjugate to its own stress and
 // half the viscous heat (sph_system.hpp), the element the other half of the
-// viscous heat (settle()); the part conjugate to the element's stress is the
-// "join work", which the solver adds to the boundary work of the energy
-// balance. It is the join's real energy error (the formulation conserves
-// momentum, not energy): -0.6 to -0.8 % of a 20-cell pulse over two crossings in
-// plane strain, r-z and 3-D (tests/coupling/test_join.cpp).
+// viscous heat (settle()); the part conjugate to the element's stress, and the
+// work of the pair forces through the offset between the coupling point and
+// the face that takes its reaction, are the "join work", which the solver adds
+// to the boundary work of the energy balance. It is the join's real energy
+// error (the formulation conserves momentum, not energy): -0.6 to -0.8 % of a
+// 20-cell pulse over two crossings in plane strain, r-z and 3-D
+// (tests/coupling/test_join.cpp).
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -69,9 +71,15 @@ class SphFemJoin {
   void add_reactions(const sph::SphSystem<D>& particles, double* f);
   // After the kick (velocities at n+1/2, coupling points refreshed): the elements
   // take their half of the viscous pair heating over the impulse dt (J into their
-  // specific energy); returns the join work over dt (J): the pair work conjugate
-  // to the elements' stress, which no internal energy books.
+  // specific energy); returns the join work over dt (J), the pair work that no
+  // internal energy books: the part conjugate to the elements' stress, plus
+  // face_offset_work().
   double settle(const sph::SphSystem<D>& particles, double dt, std::vector<MaterialPoints>& batches);
+  // The part of the last settle()'s join work done by the pair forces through
+  // the offset between a coupling point (the element centre, whose velocity
+  // the pair sums see) and the interface face that takes its reaction:
+  // sum F . (v_j - v_face) dt (J, centred velocities; docs/theory/coupling.md).
+  double face_offset_work() const { return face_offset_work_; }
 
  private:
   struct Point {
@@ -91,7 +99,11 @@ class SphFemJoin {
     Vec<D> other{};            // N, force on i from the element's stress
     Vec<D> viscous{};          // N, m_i m_j Pi_ij grad W (the viscous force on i is minus this)
     Vec<D> dv_old{};           // m/s, v_i - v_j at n-1/2
+    Vec<D> force{};            // N, the whole pair force on i (its reaction goes to the face)
+    Vec<D> offset_old{};       // m/s, v_j - v_face at n-1/2 (v_face mirrored as the reaction)
   };
+  Vec<D> face_velocity(const Point& point) const;  // mean of the face nodes' v_, mirrored as the point
+  double face_offset_work_ = 0.0;
   std::vector<Pair> pairs_;
   static constexpr int face_nodes = D == 2 ? 2 : 4;
   std::vector<std::array<std::int64_t, face_nodes>> faces_;  // interface faces

@@ -11,6 +11,7 @@
 #include "output/progress.hpp"
 #include "output/run_output.hpp"
 #include "solver/bar_output.hpp"
+#include "solver/energy_output.hpp"
 #include "solver/interrupt.hpp"
 #include "solver/run_checkpoints.hpp"
 #include "solver/solver.hpp"
@@ -28,6 +29,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   Solver<D> solver(model);
   RunOutput output(model, options, solver.snapshot());
   BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories (issue 6)
+  EnergyCsv<D> energy_csv(model, options, solver);   // energy history and its split
   // Checkpoints and restarts (issue 9): the solver's state, then the output's.
   RunCheckpoints checkpoints(model, options, [&solver, &output](StateVisitor& v) {
     solver.visit_state(v);
@@ -61,6 +63,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.step();
       output.after_cycle(solver.snapshot());
       bar_csv.after_cycle(solver.time(), solver.bars());
+      energy_csv.after_cycle(solver);
       if (const int signal = stop_requested()) {
         checkpoints.write(solver.cycle(), solver.time());
         summarise(fmt::format("interrupted by signal {}", signal), true);

@@ -247,17 +247,25 @@ template <int D>
 void Solver<D>::constrain_velocities() {
   const double dt_mean = 0.5 * (dt_ + dt_next_);
   // Transmitting boundaries first: centred dashpots on v(n+1/2) (coupling/transmitting_boundary.hpp).
-  if (!transmitting_.empty())
-    energy_.boundary_work += transmitting_.damp(position_.data(), velocity_old_.data(), velocity_.data(),
-                                                node_mass_.data(), elements_, batches_, dt_mean);
+  if (!transmitting_.empty()) {
+    const double damping_work = transmitting_.damp(position_.data(), velocity_old_.data(), velocity_.data(),
+                                                   node_mass_.data(), elements_, batches_, dt_mean);
+    energy_.boundary_work += damping_work;
+    split_.transmitting += damping_work;
+  }
   const double reaction_work = boundaries_.constrain(velocity_.data(), velocity_old_.data(),
                                                      node_mass_.data(), time_ + 0.5 * dt_next_, dt_, dt_mean);
-  energy_.boundary_work += reaction_work + boundaries_.load_work(velocity_old_.data(), dt_);
+  const double constraint_work = reaction_work + boundaries_.load_work(velocity_old_.data(), dt_);
+  energy_.boundary_work += constraint_work;
+  split_.constraints += constraint_work;
   if (join_) {  // the elements' half of the viscous heating, and the join work (coupling/sph_fem_join.hpp)
     const double work = join_->settle(*particles_, dt_mean, batches_);
     join_power_ = dt_mean > 0.0 ? work / dt_mean : 0.0;
+    split_.join_face += join_->face_offset_work();
   }
   energy_.boundary_work += (join_power_ + contact_power_) * dt_mean;  // join and contact work (coupling/)
+  split_.join += join_power_ * dt_mean;
+  split_.contact += contact_power_ * dt_mean;
 }
 
 template <int D>
@@ -286,7 +294,8 @@ void Solver<D>::account_energy() {
     kinetic += 0.5 * node_mass_[static_cast<std::size_t>(n)] * vv;
     hourglass_power -= fv;
   }
-  if (particles_) kinetic += particles_->centred_kinetic_energy();
+  split_.sph_kinetic = particles_ ? particles_->centred_kinetic_energy() : 0.0;
+  kinetic += split_.sph_kinetic;
   EnergyBalance& e = energy_;
   e.kinetic = kinetic;
   e.internal = internal_energy_;
@@ -360,8 +369,9 @@ void Solver<D>::gather_element_state() {
         !std::isfinite(energy))
       bad = std::min(bad, k);
   }
-  if (particles_) internal += particles_->internal_energy();
-  internal_energy_ = internal + bars_.internal_energy();
+  split_.sph_internal = particles_ ? particles_->internal_energy() : 0.0;
+  split_.bar_internal = bars_.internal_energy();
+  internal_energy_ = internal + split_.sph_internal + split_.bar_internal;
   if (bad != std::numeric_limits<std::int64_t>::max()) {
     const std::size_t e = static_cast<std::size_t>(bad);
     const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];

@@ -47,6 +47,19 @@ class Solver {
   double next_dt() const { return dt_next_; }
   const TimeStepLimit& time_step_limit() const { return limit_; }
   const EnergyBalance& energy() const { return energy_; }
+  // Where the energy sits and what the boundary work is made of (energy.csv).
+  struct EnergySplit {
+    double transmitting = 0.0;  // J, dashpot work (negative: energy radiated out)
+    double constraints = 0.0;   // J, reactions of fixed/prescribed/symmetry nodes and applied loads
+    double join = 0.0;          // J, SPH-FEM join work booked by no internal energy (docs/theory/coupling.md)
+    double join_face = 0.0;     // J, the part of `join` done through the coupling points' centre-face offset
+    double contact = 0.0;       // J, particle-face contact work
+    double sph_kinetic = 0.0;   // J, part of EnergyBalance::kinetic held by particles
+    double sph_internal = 0.0;  // J, part of EnergyBalance::internal held by particles
+    double bar_internal = 0.0;  // J, part of EnergyBalance::internal held by embedded bars
+  };
+  // Not checkpointed: after a restart the work terms count from the restart.
+  const EnergySplit& energy_split() const { return split_; }
   FieldSnapshot snapshot() const;
   // Every array and scalar of the run's state, for checkpoints (solver_state.cpp, issue 9).
   void visit_state(StateVisitor& visitor);
@@ -121,6 +134,7 @@ class Solver {
   double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
   TimeStepLimit limit_;
   EnergyBalance energy_;
+  EnergySplit split_;
   double internal_energy_ = 0.0;       // J, sum m e at t_n
   double hourglass_stored_ = 0.0;      // J, stiffness-form hourglass energy at t_n
   double hourglass_dissipated_ = 0.0;  // J, work absorbed by the viscous form

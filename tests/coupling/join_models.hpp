@@ -169,9 +169,10 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
     const double total = e.kinetic + e.internal + e.hourglass;
     if (e_start == 0.0 && solver.time() >= t_start) e_start = total, w_start = e.boundary_work;
     if (std::getenv("JOIN_DEBUG") && solver.cycle() % 50 == 0)
-      std::printf("t %.3f kin %.5g int %.5g hg %.5g visc %.5g sph_kin %.5g sph_int %.5g\n", t, e.kinetic,
-                  e.internal, e.hourglass, e.viscous, solver.particles()->kinetic_energy(),
-                  solver.particles()->internal_energy());
+      std::printf("t %.3f kin %.5g int %.5g hg %.5g visc %.5g sph_kin %.5g sph_int %.5g join %.5g face %.5g\n", t,
+                  e.kinetic, e.internal, e.hourglass, e.viscous, solver.particles()->kinetic_energy(),
+                  solver.particles()->internal_energy(), solver.energy_split().join,
+                  solver.energy_split().join_face);
     if (r.energy_change == 0.0 && solver.time() >= t_stop) {
       r.energy_change = (total - e_start) / e_start;
       r.join_work = (e.boundary_work - w_start) / e_start;

@@ -1,0 +1,41 @@
+#include "solver/energy_output.hpp"
+
+namespace camouflet {
+
+template <int D>
+EnergyCsv<D>::EnergyCsv(const Model& model, const RunOptions& options, const Solver<D>& solver)
+    : interval_(model.output.gauge_interval) {
+  if (options.output_dir.empty()) return;
+  // A restarted run appends to the file it finds (rows after the checkpoint
+  // may repeat times; the work terms then count from the restart).
+  const std::filesystem::path path = options.output_dir / "energy.csv";
+  if (!options.restart.empty() && std::filesystem::exists(path)) {
+    csv_ = std::make_unique<GaugeCsv>(path);  // the solver is not restored yet: no row now
+    return;
+  }
+  csv_ = std::make_unique<GaugeCsv>(
+      path, std::vector<std::string>{"energy"},
+      std::vector<std::string>{"kinetic", "internal", "hourglass", "eroded", "viscous", "boundary_work",
+                               "transmitting", "constraints", "join", "join_face", "contact", "sph_kinetic",
+                               "sph_internal", "bar_internal", "residual", "relative_error"});
+  after_cycle(solver);
+}
+
+template <int D>
+void EnergyCsv<D>::after_cycle(const Solver<D>& solver) {
+  const double time = solver.time();
+  if (!csv_ || time < next_) return;
+  next_ = time + interval_;
+  const EnergyBalance& e = solver.energy();
+  const typename Solver<D>::EnergySplit& s = solver.energy_split();
+  const double residual = e.kinetic + e.internal + e.hourglass + e.eroded - e.initial_total - e.boundary_work;
+  row_.assign({e.kinetic, e.internal, e.hourglass, e.eroded, e.viscous, e.boundary_work, s.transmitting,
+               s.constraints, s.join, s.join_face, s.contact, s.sph_kinetic, s.sph_internal, s.bar_internal,
+               residual, e.relative_error});
+  csv_->write_row(time, row_);
+}
+
+template class EnergyCsv<2>;
+template class EnergyCsv<3>;
+
+}  // namespace camouflet

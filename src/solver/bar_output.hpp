@@ -4,7 +4,10 @@
 // segment `<bar>.<k>` (k from 1 at the bar's `from` end), its axial (log)
 // strain, axial stress (Pa), axial force (N; per metre of depth in plane
 // strain, the whole ring in axisymmetric mode) and plastic strain.
+#include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "fem/embedded_bars.hpp"
 #include "output/gauge_csv.hpp"
@@ -17,9 +20,15 @@ class BarCsv {
  public:
   // No file when the model has no bars or the run writes no output.
   BarCsv(const Model& model, const RunOptions& options, const EmbeddedBars<D>& bars);
+  // Restarts: once the bars are restored, continue the file the interrupted
+  // run left, cut back to the rows before the restart (output/history_resume.hpp).
+  void resume(double time, const EmbeddedBars<D>& bars);
   void after_cycle(double time, const EmbeddedBars<D>& bars, bool last = false);
 
  private:
+  void start(double time, const EmbeddedBars<D>& bars);
+  std::filesystem::path path_;
+  std::vector<std::string> names_;
   std::unique_ptr<GaugeCsv> csv_;
   double interval_ = 0.0, next_ = 0.0;
   std::vector<double> row_;

@@ -1,24 +1,38 @@
 #include "solver/energy_output.hpp"
 
+#include <cmath>
+
+#include "output/history_resume.hpp"
+
 namespace camouflet {
 
 template <int D>
 EnergyCsv<D>::EnergyCsv(const Model& model, const RunOptions& options, const Solver<D>& solver)
     : interval_(model.output.gauge_interval) {
   if (options.output_dir.empty()) return;
-  // A restarted run appends to the file it finds (rows after the checkpoint
-  // may repeat times; the work terms then count from the restart).
-  const std::filesystem::path path = options.output_dir / "energy.csv";
-  if (!options.restart.empty() && std::filesystem::exists(path)) {
-    csv_ = std::make_unique<GaugeCsv>(path);  // the solver is not restored yet: no row now
-    return;
-  }
+  path_ = options.output_dir / "energy.csv";
+  if (options.restart.empty()) start(solver);  // else resume() once the solver is restored
+}
+
+template <int D>
+void EnergyCsv<D>::start(const Solver<D>& solver) {
   csv_ = std::make_unique<GaugeCsv>(
-      path, std::vector<std::string>{"energy"},
+      path_, std::vector<std::string>{"energy"},
       std::vector<std::string>{"kinetic", "internal", "hourglass", "eroded", "viscous", "boundary_work",
                                "transmitting", "constraints", "join", "join_face", "contact", "sph_kinetic",
                                "sph_internal", "bar_internal", "residual", "relative_error"});
+  next_ = 0.0;
   after_cycle(solver);
+}
+
+template <int D>
+void EnergyCsv<D>::resume(const Solver<D>& solver) {
+  if (path_.empty()) return;
+  const std::optional<double> last = cut_history_before(path_, solver.time());
+  if (!last) return start(solver);  // no file left: the history starts at the restart
+  csv_ = std::make_unique<GaugeCsv>(path_);
+  next_ = std::isfinite(*last) ? *last + interval_ : 0.0;
+  after_cycle(solver);  // the row of the checkpoint's cycle, when it was due
 }
 
 template <int D>

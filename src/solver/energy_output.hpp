@@ -9,6 +9,7 @@
 // particles' and bars' shares sph_kinetic, sph_internal, bar_internal,
 // residual = kinetic + internal + hourglass + eroded - initial - boundary_work
 // (signed: negative = energy lost), and relative_error (EnergyBalance).
+#include <filesystem>
 #include <memory>
 
 #include "output/gauge_csv.hpp"
@@ -21,9 +22,14 @@ class EnergyCsv {
  public:
   // No file when the run writes no output.
   EnergyCsv(const Model& model, const RunOptions& options, const Solver<D>& solver);
+  // Restarts: once the solver is restored, continue the file the interrupted
+  // run left, cut back to the rows before the restart (output/history_resume.hpp).
+  void resume(const Solver<D>& solver);
   void after_cycle(const Solver<D>& solver);
 
  private:
+  void start(const Solver<D>& solver);
+  std::filesystem::path path_;
   std::unique_ptr<GaugeCsv> csv_;
   double interval_ = 0.0, next_ = 0.0;
   std::vector<double> row_;

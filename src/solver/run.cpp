@@ -35,7 +35,11 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     solver.visit_state(v);
     output.visit_state(v);
   });
-  if (!options.restart.empty()) checkpoints.restart();
+  if (!options.restart.empty()) {
+    checkpoints.restart();
+    bar_csv.resume(solver.time(), solver.bars());
+    energy_csv.resume(solver);
+  }
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
   RunSummary summary;

@@ -58,7 +58,6 @@ class Solver {
     double sph_internal = 0.0;  // J, part of EnergyBalance::internal held by particles
     double bar_internal = 0.0;  // J, part of EnergyBalance::internal held by embedded bars
   };
-  // Not checkpointed: after a restart the work terms count from the restart.
   const EnergySplit& energy_split() const { return split_; }
   FieldSnapshot snapshot() const;
   // Every array and scalar of the run's state, for checkpoints (solver_state.cpp, issue 9).

@@ -25,6 +25,16 @@ void Solver<D>::visit_state(StateVisitor& v) {
   visit(v, "energy.initial_total", energy_.initial_total);
   visit(v, "energy.relative_error", energy_.relative_error);
   visit(v, "energy.eroded", energy_.eroded);
+  // The boundary work's parts (energy.csv); the shares of kinetic and internal energy are recomputed each
+  // cycle.
+  visit(v, "energy_split.transmitting", split_.transmitting);
+  visit(v, "energy_split.constraints", split_.constraints);
+  visit(v, "energy_split.join", split_.join);
+  visit(v, "energy_split.join_face", split_.join_face);
+  visit(v, "energy_split.contact", split_.contact);
+  visit(v, "energy_split.sph_kinetic", split_.sph_kinetic);
+  visit(v, "energy_split.sph_internal", split_.sph_internal);
+  visit(v, "energy_split.bar_internal", split_.bar_internal);
   visit(v, "eroded_count", eroded_count_);
   visit(v, "join_power", join_power_);
   visit(v, "contact_power", contact_power_);

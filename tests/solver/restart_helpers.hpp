@@ -91,7 +91,8 @@ inline void expect_same_final_state(const std::filesystem::path& a, const std::f
 // A model built in code (no case file): `make(max_cycles)` gives the model
 // stopped after that many cycles. Runs it to the end in <root>/full, then to
 // half its cycles in <root>/split and on from that checkpoint, and expects
-// the gauge CSV `gauge_csv` and every final state array bit-identical (one
+// the gauge CSV `gauge_csv`, the energy history (and the rebar history, if
+// any) and every final state array bit-identical (one
 // thread). The models must enable checkpoints (a final one is written).
 // Returns the cycles of the uninterrupted run.
 template <class MakeModel>
@@ -115,6 +116,13 @@ std::int64_t expect_split_run_bit_identical(const std::filesystem::path& root, M
   const std::string a = read_text(root / "full" / gauge_csv), b = read_text(root / "split" / gauge_csv);
   EXPECT_FALSE(a.empty()) << gauge_csv;
   EXPECT_EQ(a, b) << gauge_csv << " differs after the restart";
+  // The histories kept outside the checkpoint: energy (always) and rebar (models with bars).
+  for (const char* history : {"energy.csv", "bars.csv"}) {
+    if (!std::filesystem::exists(root / "full" / history)) continue;
+    EXPECT_EQ(read_text(root / "full" / history), read_text(root / "split" / history))
+        << history << " differs after the restart";
+  }
+  EXPECT_TRUE(std::filesystem::exists(root / "full" / "energy.csv"));
   expect_same_final_state(root / "full", root / "split");
   return reference.cycles;
 }

@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/python_scripts.hpp"
 #include "core/error.hpp"
 
 namespace camouflet::app {
@@ -18,22 +19,6 @@ namespace camouflet::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The script: $CAMOUFLET_REPORT_SCRIPT, else scripts/report.py beside the
-// build folder of this executable, else under the current folder.
-fs::path find_script(const fs::path& self) {
-  if (const char* env = std::getenv("CAMOUFLET_REPORT_SCRIPT")) return env;
-  for (const fs::path& p : {self.parent_path().parent_path() / "scripts" / "report.py",
-                            self.parent_path() / "scripts" / "report.py", fs::path("scripts") / "report.py"})
-    if (fs::exists(p)) return p;
-  return {};
-}
-
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 }  // namespace
 
@@ -49,7 +34,7 @@ void add_report_command(CLI::App& app, CommandResult& result) {
       result.exit_code = exit_bad_input;
       return;
     }
-    const fs::path script = find_script(self);
+    const fs::path script = find_python_script(self, "CAMOUFLET_REPORT_SCRIPT", "report.py");
     if (script.empty()) {
       std::cerr << "error: scripts/report.py not found (set CAMOUFLET_REPORT_SCRIPT)\n";
       result.exit_code = exit_io_failure;

@@ -18,6 +18,7 @@
 
 #include "app/commands.hpp"
 #include "app/error_report.hpp"
+#include "app/python_scripts.hpp"
 #include "app/sweep_jobs.hpp"
 #include "case/buried_structure_params.hpp"
 #include "case/sweep_spec.hpp"
@@ -55,22 +56,6 @@ std::string csv_field(const std::string& s) {
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
   return out + "\"";
-}
-
-// The collecting script: $CAMOUFLET_SWEEP_SCRIPT, else scripts/sweep.py beside
-// the build folder of this executable, else under the current folder.
-fs::path find_sweep_script(const fs::path& self) {
-  if (const char* env = std::getenv("CAMOUFLET_SWEEP_SCRIPT")) return env;
-  for (const fs::path& p : {self.parent_path().parent_path() / "scripts" / "sweep.py",
-                            self.parent_path() / "scripts" / "sweep.py", fs::path("scripts") / "sweep.py"})
-    if (fs::exists(p)) return p;
-  return {};
-}
-
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
 }
 
 // Writes the case's parameter file and generates its case file; false (with
@@ -151,7 +136,7 @@ int run_sweep(const SweepArguments& args) {
 
   // The results of every run, by the report's definitions, and the chart.
   const fs::path self = self_executable();
-  const fs::path script = find_sweep_script(self);
+  const fs::path script = find_python_script(self, "CAMOUFLET_SWEEP_SCRIPT", "sweep.py");
   if (script.empty()) {
     std::cerr << "error: scripts/sweep.py not found (set CAMOUFLET_SWEEP_SCRIPT); per-case status in "
               << (out / "cases.csv").string() << '\n';

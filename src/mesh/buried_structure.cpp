@@ -443,33 +443,11 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
   write_group("A", false, a_limit);
   write_group("B", true, b_limit);
 
-  // Structure targets (Fig. 10, our reading): on the wall mid-lines; 9 in the soil at the front wall.
-  const double r0 = s.standoff, t = s.wall_thickness, r1 = s.standoff + s.box_length;
-  const double y0 = s.top_depth, y1 = s.top_depth + s.box_height;
-  const double rf = r0 + 0.5 * t;   // front wall mid-line
-  const double yfl = y1 - 0.5 * t;  // floor mid-line
-  struct Target {
-    const char* name;
-    double r, y;
-    const char* where;
-  };
-  const Target targets[] = {
-      {"t1", rf, y0 + 0.5 * t, "front wall, top (roof corner)"},
-      {"t2", rf, 0.5 * (y0 + y1), "front wall, mid-height"},
-      {"t3", rf, yfl, "front wall, bottom (floor corner)"},
-      {"t4", r0 + 0.25 * s.box_length, yfl, "floor, quarter span"},
-      {"t5", r0 + 0.5 * s.box_length, yfl, "floor, mid-span"},
-      {"t6", r1 - 0.5 * t, yfl, "floor, back corner"},
-      {"t7", r0 + 0.5 * s.box_length, y0 + 0.5 * t, "roof, mid-span"},
-      {"t8", r1 - 0.5 * t, 0.5 * (y0 + y1), "back wall, mid-height"},
-      {"t9", r0 - 0.5 * std::min(s.size_structure, t), 0.5 * (y0 + y1),
-       "front wall, mid-height, soil side of the interface"},
-  };
   b += "# Structure targets (Wang et al. 2005, Fig. 10; placement documented in docs/buried-structure.md).\n";
   b += "[[gauges]]\nname = \"structure\"\npoints = [\n";
-  for (const Target& tg : targets)
-    fmt::format_to(out, "  {{ name = \"{}\", position = [{:.6g}, {:.6g}] }},  # {}\n", tg.name, tg.r, -tg.y,
-                   tg.where);
+  for (const buried_detail::StructureTarget& tg : buried_detail::structure_targets(s))
+    fmt::format_to(out, "  {{ name = \"{}\", position = [{:.6g}, {:.6g}] }},  # {}\n", tg.name, tg.range,
+                   -tg.depth, tg.where);
   b += "]\n";
   return b;
 }
@@ -478,6 +456,25 @@ namespace buried_detail {
 
 void check_common(const BuriedStructureSpec& s, double a) {
   check(s, a);
+}
+
+std::vector<StructureTarget> structure_targets(const BuriedStructureSpec& s) {
+  const double r0 = s.standoff, t = s.wall_thickness, r1 = s.standoff + s.box_length;
+  const double d0 = s.top_depth, d1 = s.top_depth + s.box_height;
+  const double rf = r0 + 0.5 * t;   // front wall mid-line
+  const double dfl = d1 - 0.5 * t;  // floor mid-line
+  return {
+      {"t1", rf, d0 + 0.5 * t, "front wall, top (roof corner)"},
+      {"t2", rf, 0.5 * (d0 + d1), "front wall, mid-height"},
+      {"t3", rf, dfl, "front wall, bottom (floor corner)"},
+      {"t4", r0 + 0.25 * s.box_length, dfl, "floor, quarter span"},
+      {"t5", r0 + 0.5 * s.box_length, dfl, "floor, mid-span"},
+      {"t6", r1 - 0.5 * t, dfl, "floor, back corner"},
+      {"t7", r0 + 0.5 * s.box_length, d0 + 0.5 * t, "roof, mid-span"},
+      {"t8", r1 - 0.5 * t, 0.5 * (d0 + d1), "back wall, mid-height"},
+      {"t9", r0 - 0.5 * std::min(s.size_structure, t), 0.5 * (d0 + d1),
+       "front wall, mid-height, soil side of the interface"},
+  };
 }
 
 double charge_radius(const BuriedStructureSpec& s) {

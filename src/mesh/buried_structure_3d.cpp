@@ -252,33 +252,12 @@ void write_gauges(const BuriedStructureSpec& s, std::string& b) {
   write_group("A", false, a_limit);
   write_group("B", true, b_limit);
 
-  // Structure targets (Fig. 10, placed as in r-z) in the symmetry plane, the box's mid-width.
-  const double x0 = s.standoff, t = s.wall_thickness, x1 = s.standoff + s.box_length;
-  const double d0 = s.top_depth, d1 = s.top_depth + s.box_height;
-  const double xf = x0 + 0.5 * t, dfl = d1 - 0.5 * t;
-  struct Target {
-    const char* name;
-    double x, d;
-    const char* where;
-  };
-  const Target targets[] = {
-      {"t1", xf, d0 + 0.5 * t, "front wall, top (roof corner)"},
-      {"t2", xf, 0.5 * (d0 + d1), "front wall, mid-height"},
-      {"t3", xf, dfl, "front wall, bottom (floor corner)"},
-      {"t4", x0 + 0.25 * s.box_length, dfl, "floor, quarter span"},
-      {"t5", x0 + 0.5 * s.box_length, dfl, "floor, mid-span"},
-      {"t6", x1 - 0.5 * t, dfl, "floor, back corner"},
-      {"t7", x0 + 0.5 * s.box_length, d0 + 0.5 * t, "roof, mid-span"},
-      {"t8", x1 - 0.5 * t, 0.5 * (d0 + d1), "back wall, mid-height"},
-      {"t9", x0 - 0.5 * std::min(s.size_structure, t), 0.5 * (d0 + d1),
-       "front wall, mid-height, soil side of the interface"},
-  };
   b += "# Structure targets (Wang et al. 2005, Fig. 10; docs/buried-structure.md) at the box's mid-width y = "
        "0.\n";
   b += "[[gauges]]\nname = \"structure\"\npoints = [\n";
-  for (const Target& tg : targets)
-    fmt::format_to(out, "  {{ name = \"{}\", position = [{:.6g}, 0.0, {:.6g}] }},  # {}\n", tg.name, tg.x,
-                   -tg.d, tg.where);
+  for (const StructureTarget& tg : structure_targets(s))
+    fmt::format_to(out, "  {{ name = \"{}\", position = [{:.6g}, 0.0, {:.6g}] }},  # {}\n", tg.name, tg.range,
+                   -tg.depth, tg.where);
   b += "]\n";
 }
 

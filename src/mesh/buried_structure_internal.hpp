@@ -17,6 +17,16 @@ double charge_radius(const BuriedStructureSpec& s);
 // Ranges (m from the charge centre) of the soil gauges of groups A and B, out to `far`.
 std::vector<double> soil_gauge_ranges(const BuriedStructureSpec& s, double far);
 
+// A structure target of Fig. 10 (our reading, docs/buried-structure.md): on
+// the wall mid-lines, t9 in the soil at the front wall; `range` (m) from the
+// charge axis (r, or x in 3-D), `depth` (m) below the ground.
+struct StructureTarget {
+  const char* name;
+  double range, depth;
+  const char* where;
+};
+std::vector<StructureTarget> structure_targets(const BuriedStructureSpec& s);
+
 // Keys of one geometry given in the other (structure.width, domain.side in
 // r-z) or missing (structure.width in 3-D): InputError naming the key.
 void check_geometry_keys(const BuriedStructureSpec& s);

@@ -1,0 +1,17 @@
+#pragma once
+// The Python scripts some commands run (`report`: scripts/report.py, `sweep`:
+// scripts/sweep.py; matplotlib from Debian's python3-matplotlib).
+#include <filesystem>
+#include <string>
+
+namespace camouflet::app {
+
+// The script `name`: $`env_var` when set, else scripts/<name> beside the
+// build folder of this executable (`self`), else under the current folder;
+// empty when none exists.
+std::filesystem::path find_python_script(const std::filesystem::path& self, const char* env_var,
+                                         const std::string& name);
+// `s` as one single-quoted word for /bin/sh.
+std::string shell_quoted(const std::string& s);
+
+}  // namespace camouflet::app

@@ -354,15 +354,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "# (at {} m/s); results after that time include the reflected wave.\n\n",
         1e3 * L.reflection_time, s.soil_wave_speed);
 
-  fmt::format_to(out,
-                 "title = \"{}\"\n\n[run]\ngeometry = \"axisymmetric\"\nend_time = {}  # s\ncfl = {}\n\n",
-                 s.title, s.end_time, s.cfl);
-  fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
-                 s.gauge_interval);
-  fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,
-                 s.explosive);
-  fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
-  if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
+  buried_detail::write_run_and_materials(s, "axisymmetric", b);
 
   // One part per block of the tensor grid: adjacent blocks share nodes.
   std::string boundaries;
@@ -456,6 +448,18 @@ namespace buried_detail {
 
 void check_common(const BuriedStructureSpec& s, double a) {
   check(s, a);
+}
+
+void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry, std::string& b) {
+  auto out = std::back_inserter(b);
+  fmt::format_to(out, "title = \"{}\"\n\n[run]\ngeometry = \"{}\"\nend_time = {}  # s\ncfl = {}\n\n", s.title,
+                 geometry, s.end_time, s.cfl);
+  fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
+                 s.gauge_interval);
+  fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,
+                 s.explosive);
+  fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
+  if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
 }
 
 std::vector<StructureTarget> structure_targets(const BuriedStructureSpec& s) {

@@ -316,14 +316,7 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
   std::string b;
   auto out = std::back_inserter(b);
   write_header(s, L, regenerate, b);
-  fmt::format_to(out, "title = \"{}\"\n\n[run]\ngeometry = \"3d\"\nend_time = {}  # s\ncfl = {}\n\n", s.title,
-                 s.end_time, s.cfl);
-  fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
-                 s.gauge_interval);
-  fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,
-                 s.explosive);
-  fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
-  if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
+  write_run_and_materials(s, "3d", b);
 
   // One part per block of the tensor grid: adjacent blocks share nodes.
   std::string boundaries;

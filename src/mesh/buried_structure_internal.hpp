@@ -27,6 +27,10 @@ struct StructureTarget {
 };
 std::vector<StructureTarget> structure_targets(const BuriedStructureSpec& s);
 
+// The case file's [run], [output] and [materials.*] tables, the same in both
+// geometries but for [run] geometry (`geometry`: "axisymmetric" or "3d").
+void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry, std::string& b);
+
 // Keys of one geometry given in the other (structure.width, domain.side in
 // r-z) or missing (structure.width in 3-D): InputError naming the key.
 void check_geometry_keys(const BuriedStructureSpec& s);

@@ -332,6 +332,24 @@ void SphSystem<D>::fill_snapshot(FieldSnapshot& s) const {
   auto flat = [n](const std::vector<Vec<D>>& v) {
     return std::span<const double>(reinterpret_cast<const double*>(v.data()), D * n);
   };
+  // The snapshot's views of one set of particle arrays (the particles' own, or
+  // their copies in id order); smoothing length and mass are also held by
+  // ghosts and coupling points beyond the first n entries.
+  auto publish = [&](const auto& a) {
+    s.particle_position = flat(a.position);
+    s.particle_displacement = flat(a.displacement);
+    s.particle_velocity = flat(a.velocity);
+    s.particle_acceleration = flat(a.acceleration);
+    s.particle_density = a.density;
+    s.particle_pressure = a.pressure;
+    s.particle_stress = a.stress;
+    s.particle_plastic_strain = a.plastic_strain;
+    s.particle_damage = a.damage;
+    s.particle_material = a.material;
+    s.particle_smoothing_length = std::span<const double>(a.smoothing_length.data(), n);
+    s.particle_neighbour_count = a.neighbour_count;
+    s.particle_mass = std::span<const double>(a.mass.data(), n);
+  };
   if (sorts_ > 0) {
     // Memory order differs from id order: gather copies by id.
     auto& c = id_order_;
@@ -352,34 +370,10 @@ void SphSystem<D>::fill_snapshot(FieldSnapshot& s) const {
     by_id(c.smoothing_length, p_.smoothing_length);
     by_id(c.neighbour_count, p_.neighbour_count);
     by_id(c.mass, p_.mass);
-    s.particle_position = flat(c.position);
-    s.particle_displacement = flat(c.displacement);
-    s.particle_velocity = flat(c.velocity);
-    s.particle_acceleration = flat(c.acceleration);
-    s.particle_density = c.density;
-    s.particle_pressure = c.pressure;
-    s.particle_stress = c.stress;
-    s.particle_plastic_strain = c.plastic_strain;
-    s.particle_damage = c.damage;
-    s.particle_material = c.material;
-    s.particle_smoothing_length = c.smoothing_length;
-    s.particle_neighbour_count = c.neighbour_count;
-    s.particle_mass = c.mass;
+    publish(c);
     return;
   }
-  s.particle_position = flat(p_.position);
-  s.particle_displacement = flat(p_.displacement);
-  s.particle_velocity = flat(p_.velocity);
-  s.particle_acceleration = flat(p_.acceleration);
-  s.particle_density = p_.density;
-  s.particle_pressure = p_.pressure;
-  s.particle_stress = p_.stress;
-  s.particle_plastic_strain = p_.plastic_strain;
-  s.particle_damage = p_.damage;
-  s.particle_material = p_.material;
-  s.particle_smoothing_length = std::span<const double>(p_.smoothing_length.data(), n);
-  s.particle_neighbour_count = p_.neighbour_count;
-  s.particle_mass = std::span<const double>(p_.mass.data(), n);
+  publish(p_);
 }
 
 template class SphSystem<2>;

@@ -227,30 +227,7 @@ void write_header(const BuriedStructureSpec& s, const BuriedStructureLayout& L, 
 
 void write_gauges(const BuriedStructureSpec& s, std::string& b) {
   auto out = std::back_inserter(b);
-  const double d = s.burst_depth, w3 = std::cbrt(s.charge_mass);
-  // Soil gauges (Fig. 8a) in the symmetry plane y = 0: group A at the charge
-  // depth towards the box, stopping short of it; group B on the 45-degree line down.
-  const double a_limit = s.standoff - 2.0 * s.size_structure;
-  const double b_limit = std::min({2.5 * w3, 0.9 * (s.domain_depth - d) * std::numbers::sqrt2,
-                                   0.9 * s.domain_radius * std::numbers::sqrt2});
-  const auto ranges = soil_gauge_ranges(s, b_limit);
-  const auto write_group = [&](const char* group, bool inclined, double limit) {
-    fmt::format_to(out, "[[gauges]]\nname = \"group_{}\"\npoints = [\n", group);
-    int k = 0;
-    for (double R : ranges) {
-      if (R > limit + 1e-9) break;
-      const double x = inclined ? R / std::numbers::sqrt2 : R;
-      const double z = inclined ? -d - R / std::numbers::sqrt2 : -d;
-      fmt::format_to(
-          out, "  {{ name = \"{}{}\", position = [{:.6g}, 0.0, {:.6g}] }},  # R = {:.3f} m, Z = {:.3f}\n",
-          group, ++k, x, z, R, R / w3);
-    }
-    b += "]\n\n";
-  };
-  b +=
-      "# Soil gauges (Wang et al. 2005, Fig. 8a) in the symmetry plane. A_k and B_k lie at the same range.\n";
-  write_group("A", false, a_limit);
-  write_group("B", true, b_limit);
+  write_soil_gauges(s, true, b);
 
   b += "# Structure targets (Wang et al. 2005, Fig. 10; docs/buried-structure.md) at the box's mid-width y = "
        "0.\n";

@@ -22,9 +22,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 # The headline quantities have one definition, shared with `camouflet sweep`.
-from run_metrics import (F_COUPLING, G, crater, deflections, empirical_averages, empirical_range,  # noqa: E402
-                         final_displacements, generator_parameters, in_structure_peaks, read_csv,
-                         structure_damage)
+from run_metrics import (F_COUPLING, G, band_ratio, crater, deflections, empirical_averages,  # noqa: E402
+                         empirical_range, final_displacements, gauge_names, generator_parameters,
+                         ground_shock_peaks, in_structure_peaks, radial_stress, read_csv, structure_damage,
+                         tm5_functions)
 
 
 def rebar_gauges(case_path):
@@ -39,32 +40,8 @@ def rebar_gauges(case_path):
     return []
 
 
-def gauge_names(cols, prefix):
-    names = []
-    for c in cols:
-        g = c.split(".")[0]
-        if g.startswith(prefix) and g not in names and "." in c:
-            names.append(g)
-    return names
-
-
-def radial_stress(cols, g, centre_z):
-    """Normal stress along the ray from the charge centre, compression positive (MPa)."""
-    r0 = cols[g + ".position_x"][0]
-    z0 = cols[g + ".position_y"][0]
-    R = math.hypot(r0, z0 - centre_z)
-    nr, nz = r0 / R, (z0 - centre_z) / R
-    s = cols[g + ".stress_xx"] * nr * nr + cols[g + ".stress_yy"] * nz * nz + 2 * cols[g + ".stress_xy"] * nr * nz
-    return -s / 1e6, R
-
-
 def speed(cols, g):
     return np.hypot(cols[g + ".velocity_x"], cols[g + ".velocity_y"])
-
-
-def tm5_functions(Z):
-    """TM 5-855-1 as used by the paper, eqs. (38)-(39): MPa."""
-    return F_COUPLING * 15.0 * Z ** -2.5, F_COUPLING * 22.0 * Z ** -2.0
 
 
 def save(fig, outdir, name):
@@ -111,14 +88,9 @@ def main():
         ax.fill_between(Zs, f1 / 1.5, f2 * 1.5, color="0.85", label="TM-5 band widened by 1.5")
         ax.loglog(Zs, f1, "k--", label="Function 1: f·15·Z$^{-2.5}$")
         ax.loglog(Zs, f2, "k-.", label="Function 2: f·22·Z$^{-2}$")
-        for (name, (t, cols)), style in zip(groups.items(), ("o-", "s-")):
-            Z, P = [], []
-            for g in gauge_names(cols, name[-1]):
-                s, R = radial_stress(cols, g, -d)
-                if len(s):
-                    Z.append(R / w3)
-                    P.append(np.nanmax(s))
-            peaks[name] = (np.array(Z), np.array(P))
+        for (name, rows), style in zip(ground_shock_peaks(out, d, W).items(), ("o-", "s-")):
+            Z, P = np.array([r[1] for r in rows]), np.array([r[3] for r in rows])
+            peaks[name] = (Z, P)
             ax.loglog(Z, P, style, label=f"group {name[-1]} (computed)")
         ax.set_ylim(bottom=f1.min() / 30.0)  # gauges the wave has not reached fall off the bottom
         ax.set_xlabel("scaled distance Z = R / W$^{1/3}$  [m/kg$^{1/3}$]")
@@ -132,7 +104,7 @@ def main():
         for name, (Z, P) in peaks.items():
             lo, hi = tm5_functions(Z)
             for z, p, a, b in zip(Z, P, lo, hi):
-                inside = min(a, b) / 1.5 <= p <= max(a, b) * 1.5  # Function 1 lies above 2 below Z = 1
+                inside = band_ratio(z, p) == 1.0
                 rows.append(f"<tr><td>{name[-1]}</td><td>{z:.3f}</td><td>{z * w3:.2f}</td><td>{p:.3g}</td>"
                             f"<td>{a:.3g} – {b:.3g}</td><td>{'yes' if inside else 'no'}</td></tr>")
         tables.append("<h2>Peak stresses against TM-5</h2><table><tr><th>group</th><th>Z [m/kg<sup>1/3</sup>]</th>"

@@ -106,6 +106,59 @@ def _peak(values):
     return float(np.nanmax(np.abs(values))) if len(values) else 0.0
 
 
+def tm5_functions(Z):
+    """TM 5-855-1 peak stress as the paper uses it, eqs. (38)-(39), with f = F_COUPLING: (Function 1,
+    Function 2) in MPa at scaled distance Z [m/kg^(1/3)]."""
+    return F_COUPLING * 15.0 * Z ** -2.5, F_COUPLING * 22.0 * Z ** -2.0
+
+
+def band_ratio(Z, peak):
+    """How far a peak stress [MPa] lies outside the TM-5 band widened by 1.5 (issue 8, must-show 2):
+    1 inside; peak / lower edge below it (< 1); peak / upper edge above it (> 1). Function 1 lies above
+    Function 2 below Z = 1, so the edges are the smaller and larger of the two."""
+    f1, f2 = tm5_functions(Z)
+    low, high = min(f1, f2) / 1.5, max(f1, f2) * 1.5
+    return peak / low if peak < low else peak / high if peak > high else 1.0
+
+
+def gauge_names(cols, prefix):
+    names = []
+    for c in cols:
+        g = c.split(".")[0]
+        if g.startswith(prefix) and g not in names and "." in c:
+            names.append(g)
+    return names
+
+
+def radial_stress(cols, g, centre_z):
+    """Normal stress along the ray from the charge centre, compression positive (MPa), and the range R [m]."""
+    r0 = cols[g + ".position_x"][0]
+    z0 = cols[g + ".position_y"][0]
+    R = math.hypot(r0, z0 - centre_z)
+    nr, nz = r0 / R, (z0 - centre_z) / R
+    s = cols[g + ".stress_xx"] * nr * nr + cols[g + ".stress_yy"] * nz * nz + 2 * cols[g + ".stress_xy"] * nr * nz
+    return -s / 1e6, R
+
+
+def ground_shock_peaks(outdir, burst_depth, charge_mass):
+    """{group: [(gauge, Z [m/kg^(1/3)], R [m], peak radial stress [MPa])]} of the soil gauge groups A and B
+    (Fig. 8a) in the output folder; groups whose CSV is missing are left out."""
+    w3 = charge_mass ** (1.0 / 3.0)
+    out = {}
+    for name in ("group_A", "group_B"):
+        path = os.path.join(outdir, name + ".csv")
+        if not os.path.exists(path):
+            continue
+        _, cols = read_csv(path)
+        rows = []
+        for g in gauge_names(cols, name[-1]):
+            s, R = radial_stress(cols, g, -burst_depth)
+            if len(s):
+                rows.append((g, R / w3, R, float(np.nanmax(s))))
+        out[name] = rows
+    return out
+
+
 def in_structure_peaks(cols):
     """{title: (peak |velocity| [m/s], peak |acceleration| [g], word)} of the front wall and the floor:
     the largest over the set's targets of the raw gauge values (not filtered)."""

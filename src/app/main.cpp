@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   camouflet::app::add_generate_command(app, result);
   camouflet::app::add_report_command(app, result);
   camouflet::app::add_sweep_command(app, result);
+  camouflet::app::add_compare_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

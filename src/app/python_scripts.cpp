@@ -1,6 +1,10 @@
 #include "app/python_scripts.hpp"
 
+#include <sys/wait.h>
+
 #include <cstdlib>
+
+#include "core/error.hpp"
 
 namespace camouflet::app {
 
@@ -18,6 +22,15 @@ std::string shell_quoted(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
+}
+
+int run_python_script(const fs::path& script, const std::vector<std::string>& args) {
+  std::string command = "/usr/bin/python3 " + shell_quoted(script.string());
+  for (const std::string& a : args) command += " " + shell_quoted(a);
+  const int status = std::system(command.c_str());
+  return status == -1        ? static_cast<int>(exit_io_failure)
+         : WIFEXITED(status) ? WEXITSTATUS(status)
+                             : static_cast<int>(exit_numerical_failure);
 }
 
 }  // namespace camouflet::app

@@ -4,9 +4,7 @@
 // script next to the build, passes it this executable (for `empirical --csv`)
 // and returns its status.
 #include <fmt/format.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -40,13 +38,7 @@ void add_report_command(CLI::App& app, CommandResult& result) {
       result.exit_code = exit_io_failure;
       return;
     }
-    const std::string command =
-        fmt::format("/usr/bin/python3 {} {} --camouflet {}", shell_quoted(script.string()),
-                    shell_quoted(*outdir), shell_quoted(self.string()));
-    const int status = std::system(command.c_str());
-    result.exit_code = status == -1        ? static_cast<int>(exit_io_failure)
-                       : WIFEXITED(status) ? WEXITSTATUS(status)
-                                           : static_cast<int>(exit_numerical_failure);
+    result.exit_code = run_python_script(script, {*outdir, "--camouflet", self.string()});
   });
 }
 

@@ -7,7 +7,6 @@
 // results of every run (the report's definitions, scripts/run_metrics.py) into
 // OUTDIR/sweep.csv and draws OUTDIR/sweep.png.
 #include <fmt/format.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -142,13 +141,9 @@ int run_sweep(const SweepArguments& args) {
               << (out / "cases.csv").string() << '\n';
     return exit_io_failure;
   }
-  const std::string command =
-      fmt::format("/usr/bin/python3 {} {} --camouflet {}", shell_quoted(script.string()),
-                  shell_quoted(out.string()), shell_quoted(self.string()));
-  const int status = std::system(command.c_str());
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::cerr << fmt::format("error: collecting the results failed ({}); per-case status in {}\n", command,
-                             (out / "cases.csv").string());
+  if (run_python_script(script, {out.string(), "--camouflet", self.string()}) != 0) {
+    std::cerr << fmt::format("error: collecting the results failed ({}); per-case status in {}\n",
+                             script.string(), (out / "cases.csv").string());
     return exit_io_failure;
   }
   std::cout << fmt::format("{} of {} cases ran to their end; results in {}\n", list.size() - failed,

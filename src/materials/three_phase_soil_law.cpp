@@ -158,8 +158,9 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
                                double damage, double pressure_guess) {
   const double p0 = c.ambient_pressure;
   const double cutoff = p0 - (1.0 - damage) * c.tensile_strength;
-  const double vw_max = c.water.volume(from.pore_pressure, p0);
-  const double vs_max = c.solid.volume(from.pressure, p0);
+  const double vw_max =
+      std::isnan(from.water_volume) ? c.water.volume(from.pore_pressure, p0) : from.water_volume;
+  const double vs_max = std::isnan(from.solid_volume) ? c.solid.volume(from.pressure, p0) : from.solid_volume;
   SoilState s;
   double dv_dp = 0.0, dv_dp_reported = 0.0;
   // The compacted air voids and the skeleton stay as they were at maximum

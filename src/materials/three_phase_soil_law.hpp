@@ -64,6 +64,11 @@ struct SoilCompaction {
   double volume = 1.0;         // v_min = min V/V0 on the loading (virgin) curve
   double pressure = 0.0;       // absolute p there, Pa
   double pore_pressure = 0.0;  // absolute p_b there, Pa
+  // v_w(p_b,max) and v_s(p_max) (/V0), the unloading branch's fixed end: NaN
+  // = computed from the pressures above; a caller that stores them saves two
+  // pow calls per solve (they change only when the compaction does).
+  double water_volume = std::numeric_limits<double>::quiet_NaN();
+  double solid_volume = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SoilState {

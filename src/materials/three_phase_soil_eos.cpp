@@ -18,8 +18,10 @@ constexpr double fraction_tolerance = 1e-6;
 // History columns of the predictor's solution (see register_state); the
 // pressures are absolute, as the law returns them.
 constexpr const char* trial_columns[] = {
-    "soil_trial_density",     "soil_trial_damage",       "soil_trial_pressure", "soil_trial_pore_pressure",
-    "soil_trial_pore_volume", "soil_trial_bulk_modulus", "soil_trial_branch"};
+    "soil_trial_density",       "soil_trial_damage",       "soil_trial_pressure",
+    "soil_trial_pore_pressure", "soil_trial_pore_volume",  "soil_trial_bulk_modulus",
+    "soil_trial_branch",        "soil_trial_water_volume", "soil_trial_solid_volume"};
+constexpr int trial_count = sizeof trial_columns / sizeof trial_columns[0];
 
 struct PhaseKeys {
   const char* density;
@@ -113,8 +115,8 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
   double* branch = pts.history.column(pts.history.slot("soil_eos_branch"));
   double* max_water_volume = pts.history.column(pts.history.slot("soil_max_water_volume"));
   double* max_solid_volume = pts.history.column(pts.history.slot("soil_max_solid_volume"));
-  double* trial[7];
-  for (int k = 0; k < 7; ++k) trial[k] = pts.history.column(pts.history.slot(trial_columns[k]));
+  double* trial[trial_count];
+  for (int k = 0; k < trial_count; ++k) trial[k] = pts.history.column(pts.history.slot(trial_columns[k]));
   double* const trial_density = trial[0];
   double* const trial_damage = trial[1];
   double* const trial_pressure = trial[2];
@@ -122,6 +124,8 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
   double* const trial_pore_volume = trial[4];
   double* const trial_bulk_modulus = trial[5];
   double* const trial_branch = trial[6];
+  double* const trial_water_volume = trial[7];
+  double* const trial_solid_volume = trial[8];
 
   // Exceptions may not leave an OpenMP region: the first failure is kept and
   // thrown after the loop.
@@ -155,6 +159,8 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
       s.pore_volume = trial_pore_volume[i];
       s.bulk_modulus = trial_bulk_modulus[i];
       s.branch = static_cast<SoilBranch>(static_cast<int>(trial_branch[i]));
+      s.water_volume = trial_water_volume[i];
+      s.solid_volume = trial_solid_volume[i];
       s.converged = true;
     } else if (density_ok) {
       s = soil_state(constants_, rho0 / rho, from, damage, pressure_guess, pore_guess);
@@ -186,6 +192,8 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
       trial_pore_volume[i] = s.pore_volume;
       trial_bulk_modulus[i] = s.bulk_modulus;
       trial_branch[i] = static_cast<double>(s.branch);
+      trial_water_volume[i] = s.water_volume;
+      trial_solid_volume[i] = s.solid_volume;
       continue;
     }
     branch[i] = static_cast<double>(s.branch);
@@ -198,10 +206,12 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
       min_volume[i] = v;
       max_pressure[i] = s.pressure - p0;
       max_pore_pressure[i] = s.pore_pressure - p0;
-      // From the stored gauge values, as soil_unloading_state would compute them.
-      max_water_volume[i] = constants_.water.volume(max_pore_pressure[i] + p0, p0);
-      max_solid_volume[i] = constants_.solid.volume(max_pressure[i] + p0, p0);
-      const double release = soil_unloading_modulus(constants_, v, s.pressure, s.pore_pressure);
+      // The loading solve's last evaluation was at this state (p above the
+      // cut-off), so its phase volumes are v_w(p_b,max) and v_s(p_max).
+      max_water_volume[i] = s.water_volume;
+      max_solid_volume[i] = s.solid_volume;
+      const double release =
+          soil_unloading_modulus(constants_, v, s.pressure, s.pore_pressure, s.water_volume, s.solid_volume);
       if (release > s.bulk_modulus) pts.sound_speed[i] = std::sqrt(release / rho);
     }
   }

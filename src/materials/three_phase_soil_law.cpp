@@ -130,6 +130,8 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
     s.pressure = p;
     s.pore_pressure = pb;
     s.pore_volume = vp;
+    s.water_volume = vw;
+    s.solid_volume = vs;
   };
   const double guess_excess = pore_pressure_guess - floor;
   const double x0 =
@@ -147,8 +149,13 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
 double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
                               double pore_pressure) {
   const double p0 = c.ambient_pressure;
-  const double vw = c.water.volume(pore_pressure, p0);
-  const double vs = c.solid.volume(pressure, p0);
+  return soil_unloading_modulus(c, v, pressure, pore_pressure, c.water.volume(pore_pressure, p0),
+                                c.solid.volume(pressure, p0));
+}
+
+double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
+                              double pore_pressure, double vw, double vs) {
+  const double p0 = c.ambient_pressure;
   const double compliance = (vw > 0.0 ? vw / c.water.tangent_modulus(pore_pressure, p0) : 0.0) +
                             (vs > 0.0 ? vs / c.solid.tangent_modulus(pressure, p0) : 0.0);
   return v / compliance;
@@ -184,6 +191,8 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
     f = from.volume + (vw - vw_max) + (vs - vs_max) - v;
     s.pressure = p;
     s.pore_pressure = pb;
+    s.water_volume = vw;
+    s.solid_volume = vs;
     s.pore_volume = from.volume - vs_max + (vw - vw_max);
   };
   const double tolerance = 1e-12 * std::max(1.0, v);

@@ -76,6 +76,8 @@ struct SoilState {
   double pore_pressure = 0.0;  // absolute, Pa
   double pore_volume = 0.0;    // V_p / V0
   double bulk_modulus = 0.0;   // -v dp/dv on the current branch, Pa
+  double water_volume = 0.0;   // v_w at the pore pressure of the last evaluation (/V0)
+  double solid_volume = 0.0;   // v_s at the pressure of the last evaluation (/V0)
   SoilBranch branch = SoilBranch::loading;
   int iterations = 0;
   bool converged = false;
@@ -97,6 +99,9 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
 // pressure p and pore pressure p_b (absolute): water and grains in series.
 double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
                               double pore_pressure);
+// The same with v_w(p_b) and v_s(p) already known (no pow).
+double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
+                              double pore_pressure, double water_volume, double solid_volume);
 
 // The whole law: loading when v < from.volume, otherwise unloading; the
 // tension cut-off p >= p0 - (1 - D) p_t on either branch. The guesses only

@@ -19,7 +19,9 @@ double soil_effective_strain(const SymTensor& strain) {
 }
 
 double SoilBondDamage::damage_at(double effective_strain) const {
-  return 1.0 - std::exp(-std::pow(b_ * effective_strain, g_) / g_);  // eq. 18
+  // g = 1 (Table 2) without pow: pow(x, 1) is x exactly, so the same numbers.
+  const double scaled = b_ * effective_strain;
+  return 1.0 - std::exp(-(g_ == 1.0 ? scaled : std::pow(scaled, g_)) / g_);  // eq. 18
 }
 
 void SoilBondDamage::register_state(MaterialPoints& pts) const {

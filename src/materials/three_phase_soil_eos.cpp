@@ -15,6 +15,14 @@ namespace {
 
 constexpr double fraction_tolerance = 1e-6;
 
+// History columns of the predictor's solution (see register_state); the
+// pressures are absolute, as the law returns them.
+constexpr const char* trial_columns[] = {
+    "soil_trial_density",       "soil_trial_damage",       "soil_trial_pressure",
+    "soil_trial_pore_pressure", "soil_trial_pore_volume",  "soil_trial_bulk_modulus",
+    "soil_trial_branch",        "soil_trial_water_volume", "soil_trial_solid_volume"};
+constexpr int trial_count = sizeof trial_columns / sizeof trial_columns[0];
+
 struct PhaseKeys {
   const char* density;
   const char* sound_speed;
@@ -84,6 +92,15 @@ void ThreePhaseSoilEos::register_state(MaterialPoints& pts) const {
   pts.history.add("soil_pore_pressure", 0.0);
   pts.history.add("soil_pore_volume", constants_.pore_fraction());
   pts.history.add("soil_eos_branch", 0.0);
+  // Cache of v_w(p_b,max) and v_s(p_max), the unloading branch's fixed end
+  // (exactly alpha_w and alpha_s at the reference state).
+  pts.history.add("soil_max_water_volume", constants_.water.fraction);
+  pts.history.add("soil_max_solid_volume", constants_.solid.fraction);
+  // The predictor's solution and the inputs it was solved for. The law is
+  // barotropic, so the corrector call at the same density, damage and
+  // compaction has the same root: it takes this one instead of solving again.
+  // NaN density = no trial pending.
+  for (const char* name : trial_columns) pts.history.add(name, std::nan(""));
 }
 
 void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*ctx*/, bool commit) const {
@@ -96,6 +113,19 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
   double* pore_pressure = pts.history.column(pts.history.slot("soil_pore_pressure"));
   double* pore_volume = pts.history.column(pts.history.slot("soil_pore_volume"));
   double* branch = pts.history.column(pts.history.slot("soil_eos_branch"));
+  double* max_water_volume = pts.history.column(pts.history.slot("soil_max_water_volume"));
+  double* max_solid_volume = pts.history.column(pts.history.slot("soil_max_solid_volume"));
+  double* trial[trial_count];
+  for (int k = 0; k < trial_count; ++k) trial[k] = pts.history.column(pts.history.slot(trial_columns[k]));
+  double* const trial_density = trial[0];
+  double* const trial_damage = trial[1];
+  double* const trial_pressure = trial[2];
+  double* const trial_pore_pressure = trial[3];
+  double* const trial_pore_volume = trial[4];
+  double* const trial_bulk_modulus = trial[5];
+  double* const trial_branch = trial[6];
+  double* const trial_water_volume = trial[7];
+  double* const trial_solid_volume = trial[8];
 
   // Exceptions may not leave an OpenMP region: the first failure is kept and
   // thrown after the loop.
@@ -108,7 +138,9 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
   for (std::size_t i = 0; i < n; ++i) {
     const double rho = pts.density[i];
     const double damage = pts.damage[i];
-    const SoilCompaction from{min_volume[i], max_pressure[i] + p0, max_pore_pressure[i] + p0};
+    SoilCompaction from{min_volume[i], max_pressure[i] + p0, max_pore_pressure[i] + p0};
+    from.water_volume = max_water_volume[i];
+    from.solid_volume = max_solid_volume[i];
     SoilState s;
     const bool density_ok = std::isfinite(rho) && rho > 0.0;
     // Warm starts: the pressure column holds the last solution (the previous
@@ -116,7 +148,25 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
     // stress changes little over a step, so p - p_e,max guesses p_b.
     const double pressure_guess = pts.pressure[i] + p0;
     const double pore_guess = pressure_guess - (max_pressure[i] - max_pore_pressure[i]);
-    if (density_ok) s = soil_state(constants_, rho0 / rho, from, damage, pressure_guess, pore_guess);
+    // The corrector after a predictor at the same density and damage (the
+    // compaction changes only here, and the pressure column still holds the
+    // trial's): the same root, already converged.
+    const bool reuse = commit && density_ok && trial_density[i] == rho && trial_damage[i] == damage &&
+                       pts.pressure[i] == trial_pressure[i] - p0;
+    if (reuse) {
+      s.pressure = trial_pressure[i];
+      s.pore_pressure = trial_pore_pressure[i];
+      s.pore_volume = trial_pore_volume[i];
+      s.bulk_modulus = trial_bulk_modulus[i];
+      s.branch = static_cast<SoilBranch>(static_cast<int>(trial_branch[i]));
+      s.water_volume = trial_water_volume[i];
+      s.solid_volume = trial_solid_volume[i];
+      s.converged = true;
+    } else if (density_ok) {
+      s = soil_state(constants_, rho0 / rho, from, damage, pressure_guess, pore_guess);
+    }
+    // A trial serves one corrector at most (the compaction may change there).
+    trial_density[i] = std::nan("");
     if (!density_ok || !s.converged || !std::isfinite(s.pressure) || !(s.bulk_modulus > 0.0)) {
 #pragma omp critical(three_phase_soil_failure)
       if (failed < 0 || static_cast<std::int64_t>(i) < failed) {
@@ -134,7 +184,18 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
     const double v = rho0 / rho;
     pts.pressure[i] = s.pressure - p0;
     pts.sound_speed[i] = std::sqrt(s.bulk_modulus / rho);
-    if (!commit) continue;
+    if (!commit) {
+      trial_density[i] = rho;
+      trial_damage[i] = damage;
+      trial_pressure[i] = s.pressure;
+      trial_pore_pressure[i] = s.pore_pressure;
+      trial_pore_volume[i] = s.pore_volume;
+      trial_bulk_modulus[i] = s.bulk_modulus;
+      trial_branch[i] = static_cast<double>(s.branch);
+      trial_water_volume[i] = s.water_volume;
+      trial_solid_volume[i] = s.solid_volume;
+      continue;
+    }
     branch[i] = static_cast<double>(s.branch);
     pore_pressure[i] = s.pore_pressure - p0;
     pore_volume[i] = s.pore_volume;
@@ -145,7 +206,12 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
       min_volume[i] = v;
       max_pressure[i] = s.pressure - p0;
       max_pore_pressure[i] = s.pore_pressure - p0;
-      const double release = soil_unloading_modulus(constants_, v, s.pressure, s.pore_pressure);
+      // The loading solve's last evaluation was at this state (p above the
+      // cut-off), so its phase volumes are v_w(p_b,max) and v_s(p_max).
+      max_water_volume[i] = s.water_volume;
+      max_solid_volume[i] = s.solid_volume;
+      const double release =
+          soil_unloading_modulus(constants_, v, s.pressure, s.pore_pressure, s.water_volume, s.solid_volume);
       if (release > s.bulk_modulus) pts.sound_speed[i] = std::sqrt(release / rho);
     }
   }

@@ -13,6 +13,11 @@
 //   soil_pore_pressure      current pore pressure p_b
 //   soil_pore_volume        current pore volume V_p / V0
 //   soil_eos_branch         0 loading, 1 unloading/reloading, 2 tension cut-off
+//   soil_max_water_volume,  v_w and v_s at the maximum compaction (/V0): the
+//   soil_max_solid_volume   unloading branch's fixed end, kept to save two pow per solve
+//   soil_trial_*            the predictor's root and the density and damage it was
+//                           solved at; the corrector at the same inputs takes it
+//                           (the law is barotropic) instead of solving again
 // The bond damage D of eq. 17 is read from the `damage` column (written by
 // the damage model `three_phase_soil`).
 #include <memory>

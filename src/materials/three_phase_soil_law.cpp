@@ -130,6 +130,8 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
     s.pressure = p;
     s.pore_pressure = pb;
     s.pore_volume = vp;
+    s.water_volume = vw;
+    s.solid_volume = vs;
   };
   const double guess_excess = pore_pressure_guess - floor;
   const double x0 =
@@ -147,8 +149,13 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
 double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
                               double pore_pressure) {
   const double p0 = c.ambient_pressure;
-  const double vw = c.water.volume(pore_pressure, p0);
-  const double vs = c.solid.volume(pressure, p0);
+  return soil_unloading_modulus(c, v, pressure, pore_pressure, c.water.volume(pore_pressure, p0),
+                                c.solid.volume(pressure, p0));
+}
+
+double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
+                              double pore_pressure, double vw, double vs) {
+  const double p0 = c.ambient_pressure;
   const double compliance = (vw > 0.0 ? vw / c.water.tangent_modulus(pore_pressure, p0) : 0.0) +
                             (vs > 0.0 ? vs / c.solid.tangent_modulus(pressure, p0) : 0.0);
   return v / compliance;
@@ -158,8 +165,9 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
                                double damage, double pressure_guess) {
   const double p0 = c.ambient_pressure;
   const double cutoff = p0 - (1.0 - damage) * c.tensile_strength;
-  const double vw_max = c.water.volume(from.pore_pressure, p0);
-  const double vs_max = c.solid.volume(from.pressure, p0);
+  const double vw_max =
+      std::isnan(from.water_volume) ? c.water.volume(from.pore_pressure, p0) : from.water_volume;
+  const double vs_max = std::isnan(from.solid_volume) ? c.solid.volume(from.pressure, p0) : from.solid_volume;
   SoilState s;
   double dv_dp = 0.0, dv_dp_reported = 0.0;
   // The compacted air voids and the skeleton stay as they were at maximum
@@ -183,6 +191,8 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
     f = from.volume + (vw - vw_max) + (vs - vs_max) - v;
     s.pressure = p;
     s.pore_pressure = pb;
+    s.water_volume = vw;
+    s.solid_volume = vs;
     s.pore_volume = from.volume - vs_max + (vw - vw_max);
   };
   const double tolerance = 1e-12 * std::max(1.0, v);

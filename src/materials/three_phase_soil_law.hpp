@@ -64,6 +64,11 @@ struct SoilCompaction {
   double volume = 1.0;         // v_min = min V/V0 on the loading (virgin) curve
   double pressure = 0.0;       // absolute p there, Pa
   double pore_pressure = 0.0;  // absolute p_b there, Pa
+  // v_w(p_b,max) and v_s(p_max) (/V0), the unloading branch's fixed end: NaN
+  // = computed from the pressures above; a caller that stores them saves two
+  // pow calls per solve (they change only when the compaction does).
+  double water_volume = std::numeric_limits<double>::quiet_NaN();
+  double solid_volume = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SoilState {
@@ -71,6 +76,8 @@ struct SoilState {
   double pore_pressure = 0.0;  // absolute, Pa
   double pore_volume = 0.0;    // V_p / V0
   double bulk_modulus = 0.0;   // -v dp/dv on the current branch, Pa
+  double water_volume = 0.0;   // v_w at the pore pressure of the last evaluation (/V0)
+  double solid_volume = 0.0;   // v_s at the pressure of the last evaluation (/V0)
   SoilBranch branch = SoilBranch::loading;
   int iterations = 0;
   bool converged = false;
@@ -92,6 +99,9 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
 // pressure p and pore pressure p_b (absolute): water and grains in series.
 double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
                               double pore_pressure);
+// The same with v_w(p_b) and v_s(p) already known (no pow).
+double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
+                              double pore_pressure, double water_volume, double solid_volume);
 
 // The whole law: loading when v < from.volume, otherwise unloading; the
 // tension cut-off p >= p0 - (1 - D) p_t on either branch. The guesses only

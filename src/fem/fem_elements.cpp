@@ -83,8 +83,10 @@ inline void hourglass_shapes(const PackedNodes<D>& x, const PackedNodes<D>& b,
   for (int m = 0; m < Shape<D>::modes; ++m) {
     Pack gx[D];
     for (int i = 0; i < D; ++i) {
+      // Gamma entries are +-1: add or subtract (the same sums as with the
+      // products, without the multiplications).
       gx[i] = Pack{};
-      for (int a = 0; a < N; ++a) gx[i] += Shape<D>::base[m][a] * x[i][a];
+      for (int a = 0; a < N; ++a) gx[i] = Shape<D>::base[m][a] > 0.0 ? gx[i] + x[i][a] : gx[i] - x[i][a];
     }
     for (int a = 0; a < N; ++a) {
       Pack v = broadcast(Shape<D>::base[m][a]);
@@ -217,8 +219,10 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
                              : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : le);
       }
       coef *= w;
-      for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) fh[i][a] = Pack{};
+      // All mode amplitudes first, then each force component as one sum over
+      // the modes (in mode order, as before), held in registers rather than
+      // accumulated in memory mode by mode.
+      Pack scaled[Shape<D>::modes][D];
       for (int m = 0; m < Shape<D>::modes; ++m)
         for (int i = 0; i < D; ++i) {
           Pack rate{};
@@ -233,11 +237,15 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
               if (!eroded[e0 + static_cast<std::size_t>(l)]) stored += 0.5 * coef[l] * hd * hd;
             }
           }
-          const Pack scaled = coef * amplitude;
-          for (int a = 0; a < N; ++a) fh[i][a] -= scaled * g[m][a];
+          scaled[m][i] = coef * amplitude;
         }
-      for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) fe[i][a] += fh[i][a];
+      for (int i = 0; i < D; ++i)
+        for (int a = 0; a < N; ++a) {
+          Pack h{};
+          for (int m = 0; m < Shape<D>::modes; ++m) h -= scaled[m][i] * g[m][a];
+          fh[i][a] = h;
+          fe[i][a] += h;
+        }
     }
 
     for (int l = 0; l < count; ++l) {

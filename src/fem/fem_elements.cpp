@@ -13,6 +13,9 @@
 #include "fem/element_pack.hpp"
 #include "fem/parallel.hpp"
 #include "fem/shape.hpp"
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
 
 namespace camouflet {
 
@@ -51,6 +54,25 @@ using PackedNodes = Pack[D][Shape<D>::nodes];
 template <int D>
 inline void gather_pack(const double* field, const std::int64_t* conn, int count, PackedNodes<D>& out) {
   constexpr int N = Shape<D>::nodes;
+#if defined(__AVX512F__)
+  // One 8-lane gather of node a's numbers (lane l: row l of conn), then one
+  // 8-lane gather per component straight into the pack: no lane-by-lane
+  // stores read back as a whole register.
+  __m512i row = _mm512_set_epi64(7 * N, 6 * N, 5 * N, 4 * N, 3 * N, 2 * N, N, 0);
+  if (count < pack_width) {
+    alignas(64) std::int64_t rows[pack_width];
+    for (int l = 0; l < pack_width; ++l) rows[l] = (l < count ? l : count - 1) * N;
+    row = _mm512_load_si512(rows);
+  }
+  // The masked forms with an explicit source: the plain ones pass an
+  // undefined register that GCC 12 warns about.
+  for (int a = 0; a < N; ++a) {
+    const __m512i node = _mm512_mask_i64gather_epi64(_mm512_setzero_si512(), 0xFF, row, conn + a, 8);
+    const __m512i index = node * D;  // vector extension arithmetic
+    for (int i = 0; i < D; ++i)
+      out[i][a] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), 0xFF, index, field + i, 8);
+  }
+#else
   alignas(sizeof(Pack)) double lanes[D][N][pack_width];  // the layout of PackedNodes<D>
   for (int l = 0; l < pack_width; ++l) {
     const std::int64_t* c = conn + (l < count ? l : count - 1) * N;
@@ -59,6 +81,7 @@ inline void gather_pack(const double* field, const std::int64_t* conn, int count
   }
   static_assert(sizeof lanes == sizeof out);
   std::memcpy(&out, lanes, sizeof out);
+#endif
 }
 
 template <int D>
@@ -83,8 +106,10 @@ inline void hourglass_shapes(const PackedNodes<D>& x, const PackedNodes<D>& b,
   for (int m = 0; m < Shape<D>::modes; ++m) {
     Pack gx[D];
     for (int i = 0; i < D; ++i) {
+      // Gamma entries are +-1: add or subtract (the same sums as with the
+      // products, without the multiplications).
       gx[i] = Pack{};
-      for (int a = 0; a < N; ++a) gx[i] += Shape<D>::base[m][a] * x[i][a];
+      for (int a = 0; a < N; ++a) gx[i] = Shape<D>::base[m][a] > 0.0 ? gx[i] + x[i][a] : gx[i] - x[i][a];
     }
     for (int a = 0; a < N; ++a) {
       Pack v = broadcast(Shape<D>::base[m][a]);
@@ -217,8 +242,10 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
                              : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : le);
       }
       coef *= w;
-      for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) fh[i][a] = Pack{};
+      // All mode amplitudes first, then each force component as one sum over
+      // the modes (in mode order, as before), held in registers rather than
+      // accumulated in memory mode by mode.
+      Pack scaled[Shape<D>::modes][D];
       for (int m = 0; m < Shape<D>::modes; ++m)
         for (int i = 0; i < D; ++i) {
           Pack rate{};
@@ -233,11 +260,15 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
               if (!eroded[e0 + static_cast<std::size_t>(l)]) stored += 0.5 * coef[l] * hd * hd;
             }
           }
-          const Pack scaled = coef * amplitude;
-          for (int a = 0; a < N; ++a) fh[i][a] -= scaled * g[m][a];
+          scaled[m][i] = coef * amplitude;
         }
-      for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) fe[i][a] += fh[i][a];
+      for (int i = 0; i < D; ++i)
+        for (int a = 0; a < N; ++a) {
+          Pack h{};
+          for (int m = 0; m < Shape<D>::modes; ++m) h -= scaled[m][i] * g[m][a];
+          fh[i][a] = h;
+          fe[i][a] += h;
+        }
     }
 
     for (int l = 0; l < count; ++l) {

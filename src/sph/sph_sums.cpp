@@ -52,7 +52,21 @@ void SphSystem<D>::compute_accelerations() {
   if (options_.sort_interval > 0 && search_.builds() - builds_at_sort_ >= options_.sort_interval)
     sort_by_cell();
   const std::size_t n = p_.real;
-  if (options_.artificial_stress) {
+  if (options_.artificial_stress && D == 3) {
+    // In blocks, so that the eigen-solves run on SIMD lanes (artificial_stress_lanes.cpp).
+    constexpr std::size_t block = 256;
+#pragma omp parallel for schedule(static)
+    for (std::size_t b = 0; b < n; b += block) {
+      const std::size_t count = std::min(block, n - b);
+      double scale[block];
+      for (std::size_t k = 0; k < count; ++k) {
+        const double eta = p_.planar_density[b + k];
+        scale[k] = geometric_weight(p_.position[b + k]) / (eta * eta);
+      }
+      artificial_stress_3d({p_.stress.data() + b, count}, {scale, count}, options_.artificial_stress_epsilon,
+                           {p_.tensile_term.data() + b, count});
+    }
+  } else if (options_.artificial_stress) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const double eta = p_.planar_density[i];
@@ -80,6 +94,7 @@ void SphSystem<D>::prepare_point_factors() {
     has_tensile_[k] =
         tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
   }
+  if (!options_.kernel_correction) pack_pair_points();
 }
 
 namespace {
@@ -182,6 +197,10 @@ void SphSystem<D>::force_pass(bool write_rates) {
     ForceSum* own = force_sums_.own_zeroed();
 #pragma omp for schedule(static, 256)
     for (std::size_t i = 0; i < n; ++i) {
+      if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
+        force_row_lanes(i, own);
+        continue;
+      }
       Vec<D> acc{};
       double mu_max = 0.0;
       int count = 0;
@@ -485,6 +504,10 @@ void SphSystem<D>::update_state(double dt, double time) {
     KinematicSum* own = kinematic_sums_.own_zeroed();
 #pragma omp for schedule(static, 256)
     for (std::size_t i = 0; i < n; ++i) {
+      if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
+        kinematics_row_lanes(i, own);
+        continue;
+      }
       KinematicSum mine;
       for (const std::uint32_t j : active_upper_neighbours(i)) {
         const Vec<D> dx = x[i] - x[j];

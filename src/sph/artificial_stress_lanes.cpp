@@ -76,6 +76,10 @@ void symmetric_eigen_lanes(const Lanes s[6], LaneMask running, Lanes values[3], 
 
 void artificial_stress_3d(std::span<const SymTensor> sigma, std::span<const double> scale, double epsilon,
                           std::span<SymTensor> out) {
+  if constexpr (pair_lanes < 4) {  // with 2 lanes the masked rotations cost more than they save (callgrind)
+    for (std::size_t k = 0; k < sigma.size(); ++k) out[k] = artificial_stress<3>(sigma[k], epsilon, scale[k]);
+    return;
+  }
   for (std::size_t g = 0; g < sigma.size(); g += pair_lanes) {
     const std::size_t width = std::min<std::size_t>(pair_lanes, sigma.size() - g);
     LaneMask need{};

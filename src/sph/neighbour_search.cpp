@@ -130,23 +130,29 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     }
   };
 
-  // Two passes (count, then fill) so that each thread writes its own slots.
-  std::vector<std::size_t> count(n_owned, 0);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n_owned; ++i) {
-    std::size_t k = 0;
-    visit(i, [&](std::uint32_t) { ++k; });
-    count[i] = k;
+  // One pass over the candidates: each block of points collects its sorted
+  // lists in a buffer of its own, and the buffers are then copied into place
+  // (a count pass and a fill pass visited every candidate twice).
+  constexpr std::size_t block = 256;
+  const std::size_t n_blocks = (n_owned + block - 1) / block;
+  std::vector<std::vector<std::uint32_t>> found(n_blocks);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t b = 0; b < n_blocks; ++b) {
+    std::vector<std::uint32_t>& buffer = found[b];
+    const std::size_t end = std::min(n_owned, (b + 1) * block);
+    for (std::size_t i = b * block; i < end; ++i) {
+      const std::size_t start = buffer.size();
+      visit(i, [&](std::uint32_t j) { buffer.push_back(j); });
+      std::sort(buffer.begin() + static_cast<std::ptrdiff_t>(start), buffer.end());
+      offset_[i + 1] = buffer.size() - start;
+    }
   }
-  for (std::size_t i = 0; i < n_owned; ++i) offset_[i + 1] = offset_[i] + count[i];
+  for (std::size_t i = 0; i < n_owned; ++i) offset_[i + 1] += offset_[i];
   list_.resize(offset_[n_owned]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n_owned; ++i) {
-    std::size_t k = offset_[i];
-    visit(i, [&](std::uint32_t j) { list_[k++] = j; });
-    std::sort(list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]),
-              list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]));
-  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < n_blocks; ++b)
+    std::copy(found[b].begin(), found[b].end(),
+              list_.begin() + static_cast<std::ptrdiff_t>(offset_[b * block]));
 }
 
 template <int D>

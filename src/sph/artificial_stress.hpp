@@ -13,6 +13,8 @@
 // Here `scale` stands for 1 / rho^2 (or w / eta^2 in the planar form used for
 // axisymmetry, sph/sph_system.hpp). In 2-D only the in-plane 2x2 block enters
 // the in-plane momentum equation; the out-of-plane / hoop component is left out.
+#include <span>
+
 #include "core/sym_tensor.hpp"
 
 namespace camouflet::sph {
@@ -23,5 +25,16 @@ SymTensor artificial_stress(const SymTensor& sigma, double epsilon, double scale
 // Eigen-decomposition of a symmetric 3x3 tensor by cyclic Jacobi rotations:
 // values[k] with unit eigenvector vectors[.][k] (column k).
 void symmetric_eigen(const SymTensor& a, double values[3], double vectors[3][3]);
+
+// artificial_stress<3>(sigma[k], epsilon, scale[k]) -> out[k] for every k, bit
+// for bit, with the eigen-decompositions run on SIMD lanes (artificial_stress_lanes.cpp).
+void artificial_stress_3d(std::span<const SymTensor> sigma, std::span<const double> scale, double epsilon,
+                          std::span<SymTensor> out);
+
+// The two halves of artificial_stress<3> around the eigen-decomposition:
+// true when sigma certainly has no tensile principal stress (R = 0), and R
+// from the principal stresses values[k] with directions q[.][k].
+bool no_tension(const SymTensor& sigma);
+SymTensor rotate_tensile_part(const double values[3], const double q[3][3], double epsilon, double scale);
 
 }  // namespace camouflet::sph

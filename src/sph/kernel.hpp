@@ -97,25 +97,30 @@ struct Kernel {
   // evaluation: gradient_factor(r, h) and shape(r / h). Written for the inner
   // loop: 1/h is given, one division (the outer cubic shell's 1/q) and no
   // data-dependent branch (both cubic pieces are evaluated and one selected).
-  struct PairTerms {
-    double gradient_factor;  // (dW/dr)/r, 1/m^(D+2)
-    double shape;            // w(q), dimensionless
+  // T is double, or a GCC vector of doubles (one pair per lane, pair_lanes.hpp):
+  // the same operations in the same order, so a lane gives the scalar's bits.
+  template <class T>
+  struct PairTermsOf {
+    T gradient_factor;  // (dW/dr)/r, 1/m^(D+2)
+    T shape;            // w(q), dimensionless
   };
-  PairTerms pair_terms(double r, double inv_h) const {
-    const double q = r * inv_h;
-    const double ih2 = inv_h * inv_h;
-    const double s = unit_normalisation() * (D == 2 ? ih2 * ih2 : ih2 * ih2 * inv_h);  // C / h^(D+2)
+  using PairTerms = PairTermsOf<double>;
+  template <class T>
+  PairTermsOf<T> pair_terms(T r, T inv_h) const {
+    const T q = r * inv_h;
+    const T ih2 = inv_h * inv_h;
+    const T s = unit_normalisation() * (D == 2 ? ih2 * ih2 : ih2 * ih2 * inv_h);  // C / h^(D+2)
     if (kind == KernelKind::cubic_spline) {
-      const double t = 2.0 - q;
-      const bool inner = q < 1.0;
-      const double g_inner = -3.0 + 2.25 * q;
-      const double g_outer = -0.75 * t * t / q;
-      const double w_inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
-      const double w_outer = 0.25 * t * t * t;
+      const T t = 2.0 - q;
+      const auto inner = q < 1.0;
+      const T g_inner = -3.0 + 2.25 * q;
+      const T g_outer = -0.75 * t * t / q;
+      const T w_inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+      const T w_outer = 0.25 * t * t * t;
       return {s * (inner ? g_inner : g_outer), inner ? w_inner : w_outer};
     }
-    const double t = 1.0 - 0.5 * q;
-    const double t3 = t * t * t;
+    const T t = 1.0 - 0.5 * q;
+    const T t3 = t * t * t;
     return {-s * 5.0 * t3, t3 * t * (2.0 * q + 1.0)};
   }
 

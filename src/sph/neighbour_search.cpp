@@ -106,47 +106,74 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
       sorted_[fill[static_cast<std::size_t>(cell[i])]++] = static_cast<std::uint32_t>(i);
   }
 
-  // Visits every candidate j of point i within the 3^D cells around it.
+  // Positions and smoothing lengths in cell order, so that the candidates of
+  // a cell are read contiguously. The three cells along x of each (y, z) row
+  // of the 3^D block are consecutive in that order: one range per row.
+  std::vector<Vec<D>> x_cell(n);
+  std::vector<double> h_cell(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    x_cell[s] = x[sorted_[s]];
+    h_cell[s] = h[sorted_[s]];
+  }
+
+  // Visits every candidate j of point i within the 3^D cells around it, in cell order.
   auto visit = [&](std::size_t i, auto&& on_pair) {
-    const auto ci = grid.cell_of(x[i]);
+    const Vec<D> xi = x[i];
+    const double hi = h[i];
+    // Local pointers: on_pair may write memory, and the compiler would reload the vectors' pointers.
+    const Vec<D>* xs = x_cell.data();
+    const double* hs = h_cell.data();
+    const std::uint32_t* js = sorted_.data();
+    const std::size_t* starts = cell_start.data();
+    const auto ci = grid.cell_of(xi);
+    const std::int64_t x_first = std::max<std::int64_t>(ci[0] - 1, 0);
+    const std::int64_t x_last = std::min<std::int64_t>(ci[0] + 1, grid.dims[0] - 1);
     std::array<std::int64_t, D> c{};
-    const int n_offsets = D == 2 ? 9 : 27;
-    for (int o = 0; o < n_offsets; ++o) {
+    const int n_rows = D == 2 ? 3 : 9;
+    for (int o = 0; o < n_rows; ++o) {
       int rest = o;
       bool inside = true;
-      for (int d = 0; d < D; ++d) {
+      for (int d = 1; d < D; ++d) {
         c[d] = ci[d] + (rest % 3) - 1;
         rest /= 3;
         if (c[d] < 0 || c[d] >= grid.dims[d]) inside = false;
       }
       if (!inside) continue;
-      const auto k = static_cast<std::size_t>(grid.index(c));
-      for (std::size_t s = cell_start[k]; s < cell_start[k + 1]; ++s) {
-        const std::uint32_t j = sorted_[s];
-        if (j == i) continue;
-        const double reach = support_factor * pair_smoothing_length(h[i], h[j]) + skin;
-        if (squared_distance(x[i], x[j]) < reach * reach) on_pair(j);
+      c[0] = x_first;
+      const std::size_t begin = starts[grid.index(c)];
+      c[0] = x_last;
+      const std::size_t end = starts[grid.index(c) + 1];
+      for (std::size_t s = begin; s < end; ++s) {
+        const double reach = support_factor * pair_smoothing_length(hi, hs[s]) + skin;
+        if (squared_distance(xi, xs[s]) < reach * reach && js[s] != i) on_pair(js[s]);
       }
     }
   };
 
-  // Two passes (count, then fill) so that each thread writes its own slots.
-  std::vector<std::size_t> count(n_owned, 0);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n_owned; ++i) {
-    std::size_t k = 0;
-    visit(i, [&](std::uint32_t) { ++k; });
-    count[i] = k;
+  // One pass over the candidates: each block of points collects its sorted
+  // lists in a buffer of its own, and the buffers are then copied into place
+  // (a count pass and a fill pass visited every candidate twice).
+  constexpr std::size_t block = 256;
+  const std::size_t n_blocks = (n_owned + block - 1) / block;
+  std::vector<std::vector<std::uint32_t>> found(n_blocks);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t b = 0; b < n_blocks; ++b) {
+    std::vector<std::uint32_t>& buffer = found[b];
+    const std::size_t end = std::min(n_owned, (b + 1) * block);
+    for (std::size_t i = b * block; i < end; ++i) {
+      const std::size_t start = buffer.size();
+      visit(i, [&](std::uint32_t j) { buffer.push_back(j); });
+      std::sort(buffer.begin() + static_cast<std::ptrdiff_t>(start), buffer.end());
+      offset_[i + 1] = buffer.size() - start;
+    }
   }
-  for (std::size_t i = 0; i < n_owned; ++i) offset_[i + 1] = offset_[i] + count[i];
+  for (std::size_t i = 0; i < n_owned; ++i) offset_[i + 1] += offset_[i];
   list_.resize(offset_[n_owned]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n_owned; ++i) {
-    std::size_t k = offset_[i];
-    visit(i, [&](std::uint32_t j) { list_[k++] = j; });
-    std::sort(list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]),
-              list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]));
-  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < n_blocks; ++b)
+    std::copy(found[b].begin(), found[b].end(),
+              list_.begin() + static_cast<std::ptrdiff_t>(offset_[b * block]));
 }
 
 template <int D>

@@ -52,7 +52,21 @@ void SphSystem<D>::compute_accelerations() {
   if (options_.sort_interval > 0 && search_.builds() - builds_at_sort_ >= options_.sort_interval)
     sort_by_cell();
   const std::size_t n = p_.real;
-  if (options_.artificial_stress) {
+  if (options_.artificial_stress && D == 3) {
+    // In blocks, so that the eigen-solves run on SIMD lanes (artificial_stress_lanes.cpp).
+    constexpr std::size_t block = 256;
+#pragma omp parallel for schedule(static)
+    for (std::size_t b = 0; b < n; b += block) {
+      const std::size_t count = std::min(block, n - b);
+      double scale[block];
+      for (std::size_t k = 0; k < count; ++k) {
+        const double eta = p_.planar_density[b + k];
+        scale[k] = geometric_weight(p_.position[b + k]) / (eta * eta);
+      }
+      artificial_stress_3d({p_.stress.data() + b, count}, {scale, count}, options_.artificial_stress_epsilon,
+                           {p_.tensile_term.data() + b, count});
+    }
+  } else if (options_.artificial_stress) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const double eta = p_.planar_density[i];
@@ -80,6 +94,7 @@ void SphSystem<D>::prepare_point_factors() {
     has_tensile_[k] =
         tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
   }
+  if (!options_.kernel_correction) pack_pair_points();
 }
 
 namespace {
@@ -124,25 +139,39 @@ void SphSystem<D>::refresh_active_pairs() {
     const double reach = support_factor * pair_smoothing_length(h[i], h[j]) + skin;
     return dot(dx, dx) < reach * reach;
   };
-  // Two passes (count, then fill) so that each thread writes its own slots.
+  // One pass over the cell lists: each block of particles collects its entries
+  // in a buffer of its own, then the buffers are copied into place.
+  constexpr std::size_t block = 256;
+  const std::size_t n_blocks = (n + block - 1) / block;
+  std::vector<std::vector<std::uint32_t>> found(n_blocks);
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::size_t count = 0;
-    for (const std::uint32_t j : search_.neighbours(i)) count += inside(i, j) ? 1 : 0;
-    active_offset_[i + 1] = count;
+  for (std::size_t b = 0; b < n_blocks; ++b) {
+    std::vector<std::uint32_t>& buffer = found[b];
+    const std::size_t end = std::min(n, (b + 1) * block);
+    std::size_t candidates = 0;
+    for (std::size_t i = b * block; i < end; ++i) candidates += search_.neighbours(i).size();
+    buffer.reserve(candidates);
+    for (std::size_t i = b * block; i < end; ++i) {
+      const std::size_t start = buffer.size();
+      for (const std::uint32_t j : search_.neighbours(i))
+        if (inside(i, j)) buffer.push_back(j);
+      active_offset_[i + 1] = buffer.size() - start;
+    }
   }
   for (std::size_t i = 0; i < n; ++i) active_offset_[i + 1] += active_offset_[i];
   active_.resize(active_offset_[n]);
   active_upper_.resize(n);
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::size_t k = active_offset_[i];
-    for (const std::uint32_t j : search_.neighbours(i))
-      if (inside(i, j)) active_[k++] = j;
-    const auto first = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i]);
-    const auto last = active_.begin() + static_cast<std::ptrdiff_t>(k);
-    active_upper_[i] = static_cast<std::size_t>(std::upper_bound(first, last, static_cast<std::uint32_t>(i)) -
-                                                active_.begin());
+  for (std::size_t b = 0; b < n_blocks; ++b) {
+    std::copy(found[b].begin(), found[b].end(),
+              active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[b * block]));
+    const std::size_t end = std::min(n, (b + 1) * block);
+    for (std::size_t i = b * block; i < end; ++i) {
+      const auto first = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i]);
+      const auto last = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i + 1]);
+      active_upper_[i] = static_cast<std::size_t>(
+          std::upper_bound(first, last, static_cast<std::uint32_t>(i)) - active_.begin());
+    }
   }
   upper_index_.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i)
@@ -182,6 +211,10 @@ void SphSystem<D>::force_pass(bool write_rates) {
     ForceSum* own = force_sums_.own_zeroed();
 #pragma omp for schedule(static, 256)
     for (std::size_t i = 0; i < n; ++i) {
+      if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
+        force_row_lanes(i, own);
+        continue;
+      }
       Vec<D> acc{};
       double mu_max = 0.0;
       int count = 0;
@@ -262,9 +295,13 @@ void SphSystem<D>::force_pass(bool write_rates) {
 template <int D>
 void SphSystem<D>::kick(double dt) {
   const std::size_t n = p_.real;
-  velocity_old_.assign(p_.velocity.begin(), p_.velocity.end());  // particles and ghosts, v(n-1/2)
+  const std::size_t total = p_.velocity.size();
+  velocity_old_.resize(total);  // particles and ghosts, v(n-1/2)
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) p_.velocity[i] += p_.acceleration[i] * dt;
+  for (std::size_t k = 0; k < total; ++k) {
+    velocity_old_[k] = p_.velocity[k];
+    if (k < n) p_.velocity[k] += p_.acceleration[k] * dt;
+  }
   refresh_ghosts();
   // After a restart between the force stage and the kick the pair terms are not stored:
   // the force pass at the same x(n), v(n-1/2) gives them again, bit for bit.
@@ -466,8 +503,12 @@ void SphSystem<D>::update_state(double dt, double time) {
   // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
   // with v(n+1/2): second-order in time, and the p dV work then matches the
   // kinetic energy the forces exchange far better than at x(n+1).
-  std::vector<Vec<D>> x_end(p_.position.begin(), p_.position.begin() + static_cast<std::ptrdiff_t>(n));
-  for (std::size_t i = 0; i < n; ++i) p_.position[i] -= p_.velocity[i] * (0.5 * dt);
+  std::vector<Vec<D>> x_end(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    x_end[i] = p_.position[i];
+    p_.position[i] -= p_.velocity[i] * (0.5 * dt);
+  }
   refresh_ghosts();
   const bool corrected = options_.kernel_correction;
   if (corrected) compute_correction();
@@ -485,6 +526,10 @@ void SphSystem<D>::update_state(double dt, double time) {
     KinematicSum* own = kinematic_sums_.own_zeroed();
 #pragma omp for schedule(static, 256)
     for (std::size_t i = 0; i < n; ++i) {
+      if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
+        kinematics_row_lanes(i, own);
+        continue;
+      }
       KinematicSum mine;
       for (const std::uint32_t j : active_upper_neighbours(i)) {
         const Vec<D> dx = x[i] - x[j];
@@ -573,6 +618,7 @@ void SphSystem<D>::update_state(double dt, double time) {
     }
   }
 
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     p_.planar_density[i] = eta_new[i];
     p_.smoothing_length[i] = h_new[i];

@@ -52,6 +52,7 @@
 #include "sph/kernel.hpp"
 #include "sph/mirror_boundary.hpp"
 #include "sph/neighbour_search.hpp"
+#include "sph/pair_point.hpp"
 #include "sph/sph_options.hpp"
 #include "sph/thread_sums.hpp"
 
@@ -187,7 +188,8 @@ class SphSystem {
   // storing per list entry the pair terms kick() books as heat; with
   // write_rates = false only those are stored (kick() after a restart).
   void force_pass(bool write_rates);
-  // 1/eta and the volume m/eta of every point (particles, ghosts, coupling points).
+  // 1/eta and the volume m/eta of every point (particles, ghosts, coupling points), and their packed
+  // records for the SIMD pair loops (pack_pair_points).
   void prepare_point_factors();
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
 
@@ -261,6 +263,13 @@ class SphSystem {
   };
   ThreadSums<ForceSum> force_sums_;
   ThreadSums<KinematicSum> kinematic_sums_;
+  // The pair loops on SIMD lanes (pair_lanes.cpp; without the kernel
+  // correction): row i of force_pass() and of update_state()'s kinematics,
+  // adding to own (the calling thread's sums), from the packed records.
+  std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by prepare_point_factors()
+  void pack_pair_points();
+  void force_row_lanes(std::size_t i, ForceSum* own);
+  void kinematics_row_lanes(std::size_t i, KinematicSum* own);
   ThreadSums<double> heat_sums_;
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <vector>
 
 #include "common/verification.hpp"
 #include "sph/artificial_stress.hpp"
@@ -124,4 +126,44 @@ TEST(SphArtificialStress, OnlyTensilePrincipalStressesAndFrameIndependent) {
   // Pure compression: no artificial stress.
   const SymTensor r0 = artificial_stress<3>(SymTensor::isotropic(-5.0), 0.3, 1.0);
   EXPECT_EQ(r0.xx, 0.0);
+}
+
+TEST(SphArtificialStress, BatchedEigenSolvesGiveTheScalarBits) {
+  // artificial_stress_3d runs the Jacobi solves on SIMD lanes: every result must
+  // equal artificial_stress<3> bit for bit (tensile, compressed, sheared, tiny,
+  // isotropic and diagonal tensors, and a count that leaves a partial group).
+  std::vector<SymTensor> sigma;
+  std::vector<double> scale;
+  std::uint64_t state = 12345;
+  auto uniform = [&] {  // splitmix64 -> [-1, 1)
+    state += 0x9e3779b97f4a7c15ULL;
+    std::uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-52 - 1.0;
+  };
+  for (int k = 0; k < 203; ++k) {
+    const double magnitude = std::pow(10.0, 12.0 * uniform() - 4.0);  // 1e-16 .. 1e8 Pa
+    SymTensor s{uniform(), uniform(), uniform(), uniform(), uniform(), uniform()};
+    if (k % 5 == 1) s.xy = s.yz = s.zx = 0.0;             // already diagonal
+    if (k % 5 == 2) s = SymTensor::isotropic(uniform());  // isotropic
+    if (k % 5 == 3) s.xx = s.yy = s.zz = -2.0;            // compressed with shear
+    sigma.push_back(s * magnitude);
+    scale.push_back(1.0 / (8960.0 * 8960.0) * (1.0 + uniform()));
+  }
+  std::vector<SymTensor> batched(sigma.size());
+  artificial_stress_3d(sigma, scale, 0.3, batched);
+  int tensile = 0;
+  for (std::size_t k = 0; k < sigma.size(); ++k) {
+    const SymTensor expected = artificial_stress<3>(sigma[k], 0.3, scale[k]);
+    tensile += expected.xx != 0.0 || expected.yy != 0.0 || expected.zz != 0.0;
+    EXPECT_EQ(batched[k].xx, expected.xx) << k;
+    EXPECT_EQ(batched[k].yy, expected.yy) << k;
+    EXPECT_EQ(batched[k].zz, expected.zz) << k;
+    EXPECT_EQ(batched[k].xy, expected.xy) << k;
+    EXPECT_EQ(batched[k].yz, expected.yz) << k;
+    EXPECT_EQ(batched[k].zx, expected.zx) << k;
+  }
+  EXPECT_GT(tensile, 50);  // the solve really ran on many lanes
 }

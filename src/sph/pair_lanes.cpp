@@ -1,0 +1,243 @@
+// Rows of the pair-symmetric SPH loops on SIMD lanes (pair_lanes.hpp): the
+// momentum row of force_pass() and the kinematics row of update_state(),
+// without the kernel correction (sph_sums.cpp keeps the scalar loops for it).
+// The equations and the pair-once bookkeeping are those of sph_sums.cpp; each
+// lane repeats the scalar operations in order, so that only the order of the
+// additions into a particle's sums differs from the scalar loops.
+#include "sph/pair_lanes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sph/sph_system.hpp"
+
+namespace camouflet::sph {
+
+namespace {
+
+// apply<D>(s, g) of core/sym_tensor_vec.hpp on lanes, s given by its components xx yy zz xy yz zx.
+template <int D>
+inline void apply_lanes(const Lanes s[6], const Lanes g[D], Lanes out[D]) {
+  if constexpr (D == 2) {
+    out[0] = s[0] * g[0] + s[3] * g[1];
+    out[1] = s[3] * g[0] + s[1] * g[1];
+  } else {
+    out[0] = s[0] * g[0] + s[3] * g[1] + s[5] * g[2];
+    out[1] = s[3] * g[0] + s[1] * g[1] + s[4] * g[2];
+    out[2] = s[5] * g[0] + s[4] * g[1] + s[2] * g[2];
+  }
+}
+
+// The neighbours j[0..width) of one group; lanes past the end repeat i (finite data, masked out).
+inline LaneMask fill_group(const std::uint32_t* list, std::size_t width, std::uint32_t i, std::uint32_t j[]) {
+  LaneMask valid;
+  for (int l = 0; l < pair_lanes; ++l) {
+    const bool in = static_cast<std::size_t>(l) < width;
+    j[l] = in ? list[l] : i;
+    valid[l] = in ? -1 : 0;
+  }
+  return valid;
+}
+
+}  // namespace
+
+template <int D>
+void SphSystem<D>::pack_pair_points() {
+  using P = PairPoint<D>;
+  const std::size_t total = p_.position.size();
+  pair_points_.resize(total);
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < total; ++k) {
+    double* f = pair_points_[k].f;
+    for (int a = 0; a < D; ++a) {
+      f[P::x + a] = p_.position[k][a];
+      f[P::v + a] = p_.velocity[k][a];
+    }
+    f[P::h] = p_.smoothing_length[k];
+    f[P::m] = p_.mass[k];
+    const SymTensor& s = p_.stress_term[k];
+    const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
+    for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
+    f[P::eta] = p_.planar_density[k];
+    f[P::c] = p_.wave_speed[k];
+  }
+}
+
+template <int D>
+void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
+  using P = PairPoint<D>;
+  const std::size_t n = p_.real;
+  const PairPoint<D>* points = pair_points_.data();
+  const double* fi = points[i].f;
+  const auto list = active_upper_neighbours(i);
+  Vec<D>* dissipation_out = pair_dissipation_.data() + upper_index_[i];
+  const bool volume_form = options_.volume_form;
+  const bool tensile = options_.artificial_stress;
+  const bool switched = options_.viscosity_switch && options_.viscosity_alpha > 0.0;
+  const double alpha_fixed = options_.viscosity_alpha, beta_fixed = options_.viscosity_beta;
+  const double hi = fi[P::h], mi = fi[P::m], eta_i = fi[P::eta], ci = fi[P::c];
+  const double inv_eta_i = 1.0 / eta_i;
+  const bool tensile_i = tensile && has_tensile_[i];
+  const Lanes zero{};
+  Lanes acc[D] = {}, mu_max{}, count{};
+  for (std::size_t e0 = 0; e0 < list.size(); e0 += pair_lanes) {
+    const std::size_t width = std::min<std::size_t>(pair_lanes, list.size() - e0);
+    std::uint32_t j[pair_lanes];
+    const LaneMask valid = fill_group(list.data() + e0, width, static_cast<std::uint32_t>(i), j);
+    Lanes dx[D], dv[D];
+    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - gather(points, j, P::x + a);
+    Lanes r2 = zero;
+    for (int a = 0; a < D; ++a) r2 += dx[a] * dx[a];
+    const Lanes hij = 0.5 * (hi + gather(points, j, P::h));
+    const LaneMask inside = valid & (r2 < support_factor * support_factor * hij * hij);
+    const Lanes inv_h = 1.0 / hij;
+    const Lanes r = sqrt_lanes(r2);
+    const auto w = kernel_.pair_terms(r, inv_h);
+    Lanes grad[D];
+    for (int a = 0; a < D; ++a) grad[a] = dx[a] * w.gradient_factor;
+    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - gather(points, j, P::v + a);
+    Lanes vr = zero;
+    for (int a = 0; a < D; ++a) vr += dv[a] * dx[a];
+    // Approaching pair: Monaghan 1992, eq. (4.2).
+    const LaneMask approaching = inside & (vr < 0.0);
+    const Lanes mu = approaching ? hij * vr / (r2 + 0.01 * hij * hij) : zero;
+    const Lanes eta_j = gather(points, j, P::eta);
+    const Lanes c_mean = 0.5 * (ci + gather(points, j, P::c));
+    Lanes pi_ij;
+    if (switched) {
+      Lanes alpha_j;
+      for (int l = 0; l < pair_lanes; ++l) alpha_j[l] = p_.viscosity_alpha[j[l]];
+      const Lanes alpha = 0.5 * (p_.viscosity_alpha[i] + alpha_j);
+      const Lanes beta = beta_fixed * alpha / alpha_fixed;
+      pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta_i + eta_j));
+    } else {
+      pi_ij = (-alpha_fixed * c_mean * mu + beta_fixed * mu * mu) / (0.5 * (eta_i + eta_j));
+    }
+    mu_max = max_lanes(mu_max, -mu);
+    Lanes dissipation[D];
+    for (int a = 0; a < D; ++a) dissipation[a] = approaching ? grad[a] * pi_ij : zero;
+    if (tensile) {
+      LaneMask has;
+      for (int l = 0; l < pair_lanes; ++l) has[l] = (tensile_i || has_tensile_[j[l]]) ? -1 : 0;
+      has &= inside;
+      bool any = false;
+      for (int l = 0; l < pair_lanes; ++l) any |= has[l] != 0;
+      if (any) {
+        const Lanes f = w.shape * tensile_shape_inverse_;
+        Lanes fn = f;
+        if (tensile_power_integer_ == 0) {
+          for (int l = 0; l < pair_lanes; ++l) fn[l] = std::pow(f[l], options_.artificial_stress_power);
+        } else {
+          for (int k = 1; k < tensile_power_integer_; ++k) fn *= f;
+        }
+        const SymTensor& ri = p_.tensile_term[i];
+        const double ri_c[6] = {ri.xx, ri.yy, ri.zz, ri.xy, ri.yz, ri.zx};
+        Lanes rij[6];
+        for (int l = 0; l < pair_lanes; ++l) {
+          const SymTensor& rj = p_.tensile_term[j[l]];
+          const double rj_c[6] = {rj.xx, rj.yy, rj.zz, rj.xy, rj.yz, rj.zx};
+          for (int c = 0; c < 6; ++c) rij[c][l] = ri_c[c] + rj_c[c];
+        }
+        Lanes tension[D];
+        apply_lanes<D>(rij, grad, tension);
+        for (int a = 0; a < D; ++a) dissipation[a] = has ? dissipation[a] - tension[a] * fn : dissipation[a];
+      }
+    }
+    // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
+    const Lanes inv_eta_j = 1.0 / eta_j;
+    Lanes pair[6];
+    for (int c = 0; c < 6; ++c) {
+      const Lanes sj = gather(points, j, P::stress + c);
+      pair[c] = volume_form ? fi[P::stress + c] * inv_eta_j + sj * inv_eta_i
+                            : fi[P::stress + c] * inv_eta_i + sj * inv_eta_j;
+    }
+    Lanes force[D];
+    apply_lanes<D>(pair, grad, force);
+    const Lanes mj = gather(points, j, P::m);
+    Lanes reaction[D];
+    for (int a = 0; a < D; ++a) {
+      force[a] = inside ? force[a] - dissipation[a] : zero;
+      acc[a] += force[a] * mj;
+      reaction[a] = force[a] * mi;
+    }
+    count += inside ? Lanes{} + 1.0 : zero;
+    for (std::size_t l = 0; l < width; ++l) {
+      Vec<D>& out = dissipation_out[e0 + l];
+      for (int a = 0; a < D; ++a) out[a] = dissipation[a][l];
+      if (j[l] < n) {
+        ForceSum& other = own[j[l]];
+        for (int a = 0; a < D; ++a) other.acceleration[a] -= reaction[a][l];
+        other.compression_rate = std::max(other.compression_rate, -mu[l]);
+        other.count += inside[l] ? 1 : 0;
+      }
+    }
+  }
+  ForceSum& mine = own[i];
+  for (int a = 0; a < D; ++a) mine.acceleration[a] += sum_lanes(acc[a]);
+  mine.compression_rate = std::max(mine.compression_rate, max_of_lanes(mu_max));
+  mine.count += static_cast<int>(sum_lanes(count));
+}
+
+template <int D>
+void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
+  using P = PairPoint<D>;
+  const std::size_t n = p_.real;
+  const PairPoint<D>* points = pair_points_.data();
+  const double* fi = points[i].f;
+  const auto list = active_upper_neighbours(i);
+  const bool volume_form = options_.volume_form;
+  const double hi = fi[P::h], mi = fi[P::m], eta_i = fi[P::eta];
+  const double inv_eta_i = 1.0 / eta_i, volume_i = mi / eta_i;
+  const Lanes zero{};
+  Lanes rate_sum{}, L_sum[D][D] = {};
+  for (std::size_t e0 = 0; e0 < list.size(); e0 += pair_lanes) {
+    const std::size_t width = std::min<std::size_t>(pair_lanes, list.size() - e0);
+    std::uint32_t j[pair_lanes];
+    const LaneMask valid = fill_group(list.data() + e0, width, static_cast<std::uint32_t>(i), j);
+    Lanes dx[D], dv[D];
+    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - gather(points, j, P::x + a);
+    Lanes r2 = zero;
+    for (int a = 0; a < D; ++a) r2 += dx[a] * dx[a];
+    const Lanes hij = 0.5 * (hi + gather(points, j, P::h));
+    const LaneMask inside = valid & (r2 < support_factor * support_factor * hij * hij);
+    const Lanes gradient_factor = kernel_.pair_terms(sqrt_lanes(r2), 1.0 / hij).gradient_factor;
+    Lanes grad[D];
+    for (int a = 0; a < D; ++a) grad[a] = inside ? dx[a] * gradient_factor : zero;
+    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - gather(points, j, P::v + a);
+    const Lanes mj = gather(points, j, P::m), eta_j = gather(points, j, P::eta);
+    // Volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j.
+    const Lanes weight_i = volume_form ? mj / eta_j : mj * inv_eta_i;
+    const Lanes weight_j = volume_form ? Lanes{} + volume_i : mi * (1.0 / eta_j);
+    Lanes rate = zero;
+    for (int a = 0; a < D; ++a) rate += dv[a] * grad[a];
+    rate_sum += weight_i * rate;
+    const Lanes rate_j = weight_j * rate;
+    Lanes wi_dv[D], wj_dv[D];
+    for (int a = 0; a < D; ++a) {
+      wi_dv[a] = weight_i * dv[a];
+      wj_dv[a] = weight_j * dv[a];
+    }
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) L_sum[a][b] -= wi_dv[a] * grad[b];
+    for (std::size_t l = 0; l < width; ++l) {
+      if (j[l] >= n) continue;  // ghosts and coupling points have no sums of their own
+      KinematicSum& other = own[j[l]];
+      other.rate += rate_j[l];
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) other.L[a][b] -= wj_dv[a][l] * grad[b][l];
+    }
+  }
+  KinematicSum& mine = own[i];
+  mine.rate += sum_lanes(rate_sum);
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) mine.L[a][b] += sum_lanes(L_sum[a][b]);
+}
+
+template void SphSystem<2>::pack_pair_points();
+template void SphSystem<3>::pack_pair_points();
+template void SphSystem<2>::force_row_lanes(std::size_t, ForceSum*);
+template void SphSystem<3>::force_row_lanes(std::size_t, ForceSum*);
+template void SphSystem<2>::kinematics_row_lanes(std::size_t, KinematicSum*);
+template void SphSystem<3>::kinematics_row_lanes(std::size_t, KinematicSum*);
+
+}  // namespace camouflet::sph

@@ -14,7 +14,9 @@
 #include <map>
 #include <sstream>
 
+#include "buried_structure_checks.hpp"
 #include "case/case_reader.hpp"
+#include "common/test_output.hpp"
 #include "common/verification.hpp"
 #include "mesh/buried_structure.hpp"
 #include "run_executable.hpp"
@@ -67,39 +69,43 @@ std::map<std::string, double> column_peaks(const fs::path& csv) {
   return out;
 }
 
+// A gauge peak against its stored reference: `problem` + `what` names the
+// verification record, `label` + `what` the line printed.
+struct PeakCheck {
+  const char* what;
+  double reference;
+  const char* unit;
+  double computed;
+};
+
+void verify_peaks(const std::string& problem, const std::string& label,
+                  std::initializer_list<PeakCheck> checks) {
+  for (const PeakCheck& c : checks) {
+    std::cout << label << c.what << " = " << c.computed << " " << c.unit << "\n";
+    test::verify(
+        {problem + c.what, "stored reference (this code)", c.reference, c.computed, 0.03, true, c.unit});
+  }
+}
+
 TEST(BuriedRegression, ReducedCaseGaugePeaks) {
-  const fs::path out = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "buried_regression";
-  fs::remove_all(out);
+  const fs::path out = test::fresh_test_output("buried_regression");
   const Model model = read_case_text(buried_structure_case(reduced_case(), "test"), "reduced.toml");
-  RunOptions options;
-  options.output_dir = out;
-  options.progress = ProgressStyle::none;
-  options.threads = 1;
-  const RunSummary summary = run_model(model, options);
+  const RunSummary summary = run_model(model, test::quiet_run_options(out));
   ASSERT_FALSE(summary.failed) << summary.stop_reason;
   EXPECT_LT(summary.energy.relative_error, 0.02);
 
   const auto a = column_peaks(out / "group_A.csv");
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
-  struct Reference {
-    const char* what;
-    double value;
-    const char* unit;
-  };
-  const std::pair<Reference, double> checks[] = {
-      {{"group_B B1 pressure", 9.6762e7, "Pa"}, b.at("B1.pressure")},
-      {{"group_B B2 pressure", 1.63386e6, "Pa"}, b.at("B2.pressure")},
-      {{"group_A A1 pressure", 1.74867e8, "Pa"}, a.at("A1.pressure")},
-      {{"group_B B1 speed (velocity_x)", 27.401, "m/s"}, b.at("B1.velocity_x")},
-      {{"structure t9 stress_xx", 1.28569e7, "Pa"}, s.at("t9.stress_xx")},
-      {{"structure t2 velocity_x", 6.41329, "m/s"}, s.at("t2.velocity_x")},
-  };
-  for (const auto& [ref, computed] : checks) {
-    std::cout << "regression " << ref.what << " = " << computed << " " << ref.unit << "\n";
-    test::verify({std::string("Reduced buried-structure case: peak ") + ref.what,
-                  "stored reference (this code)", ref.value, computed, 0.03, true, ref.unit});
-  }
+  verify_peaks("Reduced buried-structure case: peak ", "regression ",
+               {
+                   {"group_B B1 pressure", 9.6762e7, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 1.63386e6, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 1.74867e8, "Pa", a.at("A1.pressure")},
+                   {"group_B B1 speed (velocity_x)", 27.401, "m/s", b.at("B1.velocity_x")},
+                   {"structure t9 stress_xx", 1.28569e7, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 6.41329, "m/s", s.at("t2.velocity_x")},
+               });
 
   // `camouflet report` on the same output: the page and its figures (needs
   // Debian's python3-matplotlib, which scripts/setup.sh installs).
@@ -119,20 +125,11 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
 // FEM soil, reinforcement mats as embedded bars. References produced by this
 // code (the commit adding this test); tolerance 3 % as above.
 TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
-  const fs::path out = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "buried_regression_sph";
-  fs::remove_all(out);
-  BuriedStructureSpec spec = reduced_case();
-  spec.sph_radius = 0.3;
-  spec.has_rebar = true;
-  spec.rebar_cover = 0.015;
-  spec.rebar_ratio = 0.005;
+  const fs::path out = test::fresh_test_output("buried_regression_sph");
+  const BuriedStructureSpec spec = test::with_sph_zone_and_rebar(reduced_case(), 0.3, 0.015, 0.005);
   const Model model = read_case_text(buried_structure_case(spec, "test"), "reduced_sph.toml");
   ASSERT_EQ(model.joins.size(), 1u);
-  RunOptions options;
-  options.output_dir = out;
-  options.progress = ProgressStyle::none;
-  options.threads = 1;
-  const RunSummary summary = run_model(model, options);
+  const RunSummary summary = run_model(model, test::quiet_run_options(out));
   ASSERT_FALSE(summary.failed) << summary.stop_reason;
   // Known weak: with the SPH zone the balance closes to 4.1 % here (the join
   // resolves the shock passing it only to first order in the spacing, see
@@ -144,24 +141,15 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
   const auto bars = column_peaks(out / "bars.csv");
-  struct Reference {
-    const char* what;
-    double value;
-    const char* unit;
-  };
-  const std::pair<Reference, double> checks[] = {
-      {{"group_B B1 pressure", 2.31435e8, "Pa"}, b.at("B1.pressure")},
-      {{"group_B B2 pressure", 1.17377e7, "Pa"}, b.at("B2.pressure")},
-      {{"group_A A1 pressure", 3.46766e8, "Pa"}, a.at("A1.pressure")},
-      {{"structure t9 stress_xx", 8.07401e7, "Pa"}, s.at("t9.stress_xx")},
-      {{"structure t2 velocity_x", 18.059, "m/s"}, s.at("t2.velocity_x")},
-      {{"rebar front_out.1 axial_strain", 2.39349e-3, "-"}, bars.at("front_out.1.axial_strain")},
-  };
-  for (const auto& [ref, computed] : checks) {
-    std::cout << "regression (SPH zone) " << ref.what << " = " << computed << " " << ref.unit << "\n";
-    test::verify({std::string("Reduced buried-structure case with SPH zone: peak ") + ref.what,
-                  "stored reference (this code)", ref.value, computed, 0.03, true, ref.unit});
-  }
+  verify_peaks("Reduced buried-structure case with SPH zone: peak ", "regression (SPH zone) ",
+               {
+                   {"group_B B1 pressure", 2.31435e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 1.17377e7, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 3.46766e8, "Pa", a.at("A1.pressure")},
+                   {"structure t9 stress_xx", 8.07401e7, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 18.059, "m/s", s.at("t2.velocity_x")},
+                   {"rebar front_out.1 axial_strain", 2.39349e-3, "-", bars.at("front_out.1.axial_strain")},
+               });
 }
 
 }  // namespace

@@ -10,14 +10,16 @@
 #include <fstream>
 #include <numbers>
 
+#include "buried_structure_checks.hpp"
 #include "case/buried_structure_params.hpp"
 #include "case/case_reader.hpp"
 #include "common/verification.hpp"
 #include "mesh/buried_structure.hpp"
-#include "run_executable.hpp"
 
 namespace camouflet {
 namespace {
+
+using test::expect_refused;
 
 BuriedStructureSpec paper_coarse() {
   BuriedStructureSpec s;
@@ -58,12 +60,7 @@ TEST(BuriedStructure, PaperCaseReadsAsOneFusedMesh) {
   EXPECT_EQ(model.run.mode, GeometryMode::axisymmetric);
   EXPECT_EQ(model.mesh.element_count(), layout.element_count);
   // Fused: no two nodes at the same place (adjacent blocks share theirs).
-  std::vector<std::pair<long long, long long>> at;
-  for (std::size_t n = 0; n < model.mesh.node_count(); ++n)
-    at.emplace_back(std::llround(model.mesh.coordinates[2 * n] * 1e7),
-                    std::llround(model.mesh.coordinates[2 * n + 1] * 1e7));
-  std::sort(at.begin(), at.end());
-  EXPECT_EQ(std::adjacent_find(at.begin(), at.end()), at.end()) << "duplicate nodes: blocks not fused";
+  EXPECT_FALSE(test::has_duplicate_nodes(model.mesh)) << "duplicate nodes: blocks not fused";
   // No nodes inside the box (its interior is empty).
   for (std::size_t n = 0; n < model.mesh.node_count(); ++n) {
     const double r = model.mesh.coordinates[2 * n], z = model.mesh.coordinates[2 * n + 1];
@@ -106,15 +103,6 @@ TEST(BuriedStructure, GradedFineNearTheChargeAndTheStructure) {
   EXPECT_GT(far, near);
 }
 
-void expect_refused(BuriedStructureSpec s, const std::string& key) {
-  try {
-    layout_buried_structure(s);
-    ADD_FAILURE() << "accepted; expected an error naming " << key;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().key, key) << e.what();
-  }
-}
-
 TEST(BuriedStructure, BadInputNamesTheKey) {
   auto s = paper_coarse();
   s.standoff = 0.2;  // inside the charge (radius 0.245 m)
@@ -138,31 +126,17 @@ TEST(BuriedStructure, BadInputNamesTheKey) {
 // The paper's zoning (Fig. 6): an SPH zone around the charge, joined to the
 // FEM soil, the charge as SPH explosive particles, reinforcement as bars.
 TEST(BuriedStructure, SphZoneAndRebarCase) {
-  auto spec = paper_coarse();
-  spec.sph_radius = 1.5;
-  spec.has_rebar = true;
-  spec.rebar_cover = 0.025;
-  spec.rebar_ratio = 0.005;
+  const BuriedStructureSpec spec = test::with_sph_zone_and_rebar(paper_coarse(), 1.5, 0.025, 0.005);
   const BuriedStructureLayout L = layout_buried_structure(spec);
   const Model model = read_case_text(buried_structure_case(spec, "test"), "generated.toml");
   ASSERT_EQ(model.joins.size(), 1u);
-  int charge = -1, zone = -1;
-  for (std::size_t k = 0; k < model.parts.size(); ++k) {
-    if (model.parts[k].name == "charge") charge = static_cast<int>(k);
-    if (model.parts[k].name == "near_field") zone = static_cast<int>(k);
-  }
-  ASSERT_GE(charge, 0);
-  ASSERT_GE(zone, 0);
-  EXPECT_EQ(model.joins[0].sph_part, zone);
-  double charge_volume = 0.0, zone_volume = 0.0;
-  std::size_t charge_count = 0, zone_count = 0;
-  for (std::size_t i = 0; i < model.particles.count(); ++i) {
-    if (model.particles.particle_part[i] == charge)
-      charge_volume += model.particles.volume[i], ++charge_count;
-    if (model.particles.particle_part[i] == zone) zone_volume += model.particles.volume[i], ++zone_count;
-  }
-  EXPECT_EQ(charge_count, L.charge_particles);
-  EXPECT_EQ(zone_count, L.zone_particles);
+  const test::SphZoneParticles p = test::sph_zone_particles(model);
+  ASSERT_GE(p.charge, 0);
+  ASSERT_GE(p.zone, 0);
+  EXPECT_EQ(model.joins[0].sph_part, p.zone);
+  const double charge_volume = p.charge_volume, zone_volume = p.zone_volume;
+  EXPECT_EQ(p.charge_count, L.charge_particles);
+  EXPECT_EQ(p.zone_count, L.zone_particles);
   // The charge's cell-centred disc holds the charge mass within the generator's 3 %.
   test::verify({"Buried-structure generator: SPH charge mass", "100 kg TNT (paper section 5)", 100.0,
                 charge_volume * 1630.0, 0.03, true, "kg"});
@@ -202,18 +176,14 @@ TEST(BuriedStructure, SphZoneBadInputNamesTheKey) {
 
 // Through `camouflet generate`: status 2 and one line naming file, line and key.
 TEST(BuriedStructure, GenerateRefusesAnSphZoneCrossingTheStructure) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "generate-bad";
-  fs::create_directories(dir);
-  const fs::path params = dir / "crossing.params.toml";
-  std::ofstream(params) << "[charge]\nmass = 100.0\n[structure]\nstandoff = 6.0\n[sph]\nradius = 5.95\n";
   const auto r =
-      test::run_camouflet("generate '" + params.string() + "' -o '" + (dir / "out.toml").string() + "'");
+      test::generate_from("generate-bad", "crossing.params.toml",
+                          "[charge]\nmass = 100.0\n[structure]\nstandoff = 6.0\n[sph]\nradius = 5.95\n");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("crossing.params.toml:6"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("key 'sph.radius'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("crosses the structure"), std::string::npos) << r.output;
-  EXPECT_FALSE(fs::exists(dir / "out.toml"));
+  EXPECT_FALSE(std::filesystem::exists(r.case_file));
 }
 
 TEST(BuriedStructure, ParameterFileKeysAndLines) {

@@ -12,15 +12,18 @@
 #include <numbers>
 #include <set>
 
+#include "buried_structure_checks.hpp"
 #include "case/buried_structure_params.hpp"
 #include "case/case_reader.hpp"
+#include "common/test_output.hpp"
 #include "common/verification.hpp"
 #include "mesh/buried_structure.hpp"
-#include "run_executable.hpp"
 #include "solver/run.hpp"
 
 namespace camouflet {
 namespace {
+
+using test::expect_refused;
 
 // The paper's example in 3-D, coarse: a 4 m x 4 m x 1 m box, a 14 x 7 x 6 m half domain.
 BuriedStructureSpec coarse_3d() {
@@ -74,13 +77,7 @@ TEST(BuriedStructure3d, CaseReadsAsOneFusedHalfModel) {
   const FemMesh& mesh = model.mesh;
 
   // Fused: no two nodes at one place.
-  std::vector<std::array<long long, 3>> at;
-  for (std::size_t n = 0; n < mesh.node_count(); ++n)
-    at.push_back({std::llround(mesh.coordinates[3 * n] * 1e7),
-                  std::llround(mesh.coordinates[3 * n + 1] * 1e7),
-                  std::llround(mesh.coordinates[3 * n + 2] * 1e7)});
-  std::sort(at.begin(), at.end());
-  EXPECT_EQ(std::adjacent_find(at.begin(), at.end()), at.end()) << "duplicate nodes: blocks not fused";
+  EXPECT_FALSE(test::has_duplicate_nodes(mesh)) << "duplicate nodes: blocks not fused";
 
   // The box is fused with the soil: every node on the box's outer faces below
   // the ground (x = 6 or 10, y = 2, z = -1) belongs to a concrete and a soil element.
@@ -141,30 +138,16 @@ TEST(BuriedStructure3d, CaseReadsAsOneFusedHalfModel) {
 }
 
 TEST(BuriedStructure3d, SphZoneAndRebarMats) {
-  BuriedStructureSpec spec = coarse_3d();
-  spec.sph_radius = 1.5;
-  spec.has_rebar = true;
-  spec.rebar_cover = 0.025;
-  spec.rebar_ratio = 0.005;
+  const BuriedStructureSpec spec = test::with_sph_zone_and_rebar(coarse_3d(), 1.5, 0.025, 0.005);
   const BuriedStructureLayout L = layout_buried_structure(spec);
   const Model model = read_case_text(buried_structure_case(spec, "test"), "generated3d_sph.toml");
   ASSERT_EQ(model.joins.size(), 1u);
-  int charge = -1, zone = -1;
-  for (std::size_t k = 0; k < model.parts.size(); ++k) {
-    if (model.parts[k].name == "charge") charge = static_cast<int>(k);
-    if (model.parts[k].name == "near_field") zone = static_cast<int>(k);
-  }
-  ASSERT_GE(charge, 0);
-  ASSERT_GE(zone, 0);
-  double charge_volume = 0.0, zone_volume = 0.0;
-  std::size_t charge_count = 0, zone_count = 0;
-  for (std::size_t i = 0; i < model.particles.count(); ++i) {
-    if (model.particles.particle_part[i] == charge)
-      charge_volume += model.particles.volume[i], ++charge_count;
-    if (model.particles.particle_part[i] == zone) zone_volume += model.particles.volume[i], ++zone_count;
-  }
-  EXPECT_EQ(charge_count, L.charge_particles);
-  EXPECT_EQ(zone_count, L.zone_particles);
+  const test::SphZoneParticles p = test::sph_zone_particles(model);
+  ASSERT_GE(p.charge, 0);
+  ASSERT_GE(p.zone, 0);
+  const double charge_volume = p.charge_volume, zone_volume = p.zone_volume;
+  EXPECT_EQ(p.charge_count, L.charge_particles);
+  EXPECT_EQ(p.zone_count, L.zone_particles);
   // The half cube is tiled exactly: the charge mass is the given one.
   test::verify({"3-D buried-structure generator: SPH charge mass (both halves)",
                 "100 kg TNT (paper section 5)", 100.0, 2.0 * charge_volume * 1630.0, 1e-9, true, "kg"});
@@ -204,15 +187,6 @@ TEST(BuriedStructure3d, SphZoneAndRebarMats) {
   EXPECT_EQ(walls.size(), 10u);
   EXPECT_NE(buried_structure_case(spec, "t").find("# rebar gauges (bars.csv): In-1=front_in_z1.1"),
             std::string::npos);
-}
-
-void expect_refused(const BuriedStructureSpec& s, const std::string& key) {
-  try {
-    layout_buried_structure(s);
-    ADD_FAILURE() << "accepted; expected an error naming " << key;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().key, key) << e.what();
-  }
 }
 
 TEST(BuriedStructure3d, BadInputNamesTheKey) {
@@ -273,17 +247,12 @@ TEST(BuriedStructure3d, ParameterFileKeysAndLines) {
 
 // Through `camouflet generate`: status 2 and one line naming file, line and key.
 TEST(BuriedStructure3d, GenerateRefusesANegativeWidth) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "generate-bad-3d";
-  fs::create_directories(dir);
-  const fs::path params = dir / "width.params.toml";
-  std::ofstream(params) << "[domain]\ngeometry = \"3d\"\n[structure]\nwidth = -1.0\n";
-  const auto r =
-      test::run_camouflet("generate '" + params.string() + "' -o '" + (dir / "out.toml").string() + "'");
+  const auto r = test::generate_from("generate-bad-3d", "width.params.toml",
+                                     "[domain]\ngeometry = \"3d\"\n[structure]\nwidth = -1.0\n");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("width.params.toml:4"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("key 'structure.width'"), std::string::npos) << r.output;
-  EXPECT_FALSE(fs::exists(dir / "out.toml"));
+  EXPECT_FALSE(std::filesystem::exists(r.case_file));
 }
 
 // A tiny 3-D case (2 kg TNT at 0.2 m beside a 0.6 m box) with the SPH zone and rebar.
@@ -318,13 +287,7 @@ BuriedStructureSpec tiny_3d() {
 
 RunSummary run_tiny(const BuriedStructureSpec& s, const std::string& name) {
   const Model model = read_case_text(buried_structure_case(s, "test"), name + ".toml");
-  const auto out = std::filesystem::path(CAMOUFLET_BINARY_DIR) / "test-output" / name;
-  std::filesystem::remove_all(out);
-  RunOptions options;
-  options.output_dir = out;
-  options.progress = ProgressStyle::none;
-  options.threads = 1;
-  const RunSummary summary = run_model(model, options);
+  const RunSummary summary = run_model(model, test::quiet_run_options(test::fresh_test_output(name)));
   std::cout << name << ": " << model.mesh.element_count() << " elements, " << model.particles.count()
             << " particles, " << model.bars.size() << " bars, " << summary.cycles << " cycles, energy error "
             << summary.energy.relative_error << "\n";

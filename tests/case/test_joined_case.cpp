@@ -12,8 +12,10 @@
 
 #include "case/case_reader.hpp"
 #include "common/fem_models.hpp"
+#include "common/test_output.hpp"
 #include "common/verification.hpp"
 #include "run_executable.hpp"
+#include "soil_case_text.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -60,20 +62,9 @@ TEST(JoinedCase, ReaderCutsTheHoleAndFillsAroundTheCore) {
 }
 
 TEST(JoinedCase, CutFromRestrictsTheHoleToTheNamedParts) {
-  const std::string text = R"([run]
-end_time = 1e-4
-[materials.soil]
-eos = { type = "linear", density = 2000.0, bulk_modulus = 6.6667e8 }
-strength = { type = "elastic", shear_modulus = 4.0e8 }
-[[parts]]
-name = "left"
-material = "soil"
-block = { origin = [0.0, 0.0], size = [0.6, 0.4], cells = [12, 8] }
-[[parts]]
-name = "right"
-material = "soil"
-block = { origin = [0.6, 0.0], size = [0.6, 0.4], cells = [12, 8] }
-[[parts]]
+  const std::string text = test::soil_case_header("end_time = 1e-4\n") +
+                           test::soil_block("left", "[0.0, 0.0]", "[0.6, 0.4]", "[12, 8]") +
+                           test::soil_block("right", "[0.6, 0.0]", "[0.6, 0.4]", "[12, 8]") + R"([[parts]]
 name = "zone"
 kind = "sph"
 material = "soil"
@@ -89,16 +80,8 @@ fill = { shape = "box", min = [0.4, 0.0], max = [0.8, 0.4], spacing = 0.05 }
 }
 
 TEST(JoinedCase, ContactsAreRead) {
-  const std::string text = R"([run]
-end_time = 1e-4
-[materials.soil]
-eos = { type = "linear", density = 2000.0, bulk_modulus = 6.6667e8 }
-strength = { type = "elastic", shear_modulus = 4.0e8 }
-[[parts]]
-name = "plate"
-material = "soil"
-block = { origin = [0.0, 0.0], size = [0.6, 0.1], cells = [12, 2] }
-[[parts]]
+  const std::string text = test::soil_case_header("end_time = 1e-4\n") +
+                           test::soil_block("plate", "[0.0, 0.0]", "[0.6, 0.1]", "[12, 2]") + R"([[parts]]
 name = "ball"
 kind = "sph"
 material = "soil"
@@ -162,8 +145,7 @@ double energy_error(const fs::path& out) {
 // spacing (energy error 6.0 % at 0.05 m, 3.2 % at 0.025 m, measured), so the
 // tolerance here is 8 %; the smooth pulse below holds the join to 1 %.
 TEST(JoinedCase, ExampleRunsThroughTheExecutable) {
-  const fs::path out = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "joined_zone";
-  fs::remove_all(out);
+  const fs::path out = test::fresh_test_output("joined_zone");
   const auto r = test::run_camouflet("run '" + example.string() + "' -o '" + out.string() + "' --threads 1");
   ASSERT_EQ(r.status, 0) << r.output;
   test::verify({"Joined case (impact at the join, 0.05 m) through the executable: energy balance error",
@@ -175,42 +157,16 @@ TEST(JoinedCase, ExampleRunsThroughTheExecutable) {
 // crosses a joined zone [0.4, 0.8] m; the energy balance (boundary and join
 // work booked) closes within 1 % (issue 7, "what it must show" 2).
 TEST(JoinedCase, PulseThroughAJoinedZoneConservesEnergy) {
-  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "joined_pulse";
-  fs::remove_all(dir);
+  const fs::path dir = test::fresh_test_output("joined_pulse");
   fs::create_directories(dir);
-  std::ofstream(dir / "pulse.toml") << R"([run]
-geometry = "plane_strain"
-end_time = 1.2e-3
-cfl = 0.5
-[materials.soil]
-eos = { type = "linear", density = 2000.0, bulk_modulus = 6.6667e8 }
-strength = { type = "elastic", shear_modulus = 4.0e8 }
-[[parts]]
-name = "bar"
-material = "soil"
-block = { origin = [0.0, 0.0], size = [1.2, 0.1], cells = [48, 4] }
-[[parts]]
-name = "zone"
-kind = "sph"
-material = "soil"
-join = true
-fill = { shape = "box", min = [0.4, 0.0], max = [0.8, 0.1], spacing = 0.025 }
-[[boundary]]
-type = "velocity"
-set = "bar.xmin"
-components = ["x"]
-value = [1.0]
-history = [[0.0, 0.0], [3.2e-5, 0.1464], [6.4e-5, 0.5], [9.7e-5, 0.8536], [1.29e-4, 1.0], [1.61e-4, 0.8536],
-           [1.93e-4, 0.5], [2.25e-4, 0.1464], [2.58e-4, 0.0]]
-[[boundary]]
-type = "symmetry"
-set = "bar.ymin"
-normal = [0.0, 1.0]
-[[boundary]]
-type = "symmetry"
-set = "bar.ymax"
-normal = [0.0, 1.0]
-)";
+  std::ofstream(dir / "pulse.toml")
+      << test::soil_case_header("geometry = \"plane_strain\"\nend_time = 1.2e-3\ncfl = 0.5\n") +
+             test::soil_block("bar", "[0.0, 0.0]", "[1.2, 0.1]", "[48, 4]") + test::joined_strip_zone +
+             test::x_velocity_pulse(
+                 "bar.xmin",
+                 "[[0.0, 0.0], [3.2e-5, 0.1464], [6.4e-5, 0.5], [9.7e-5, 0.8536], [1.29e-4, 1.0], "
+                 "[1.61e-4, 0.8536],\n           [1.93e-4, 0.5], [2.25e-4, 0.1464], [2.58e-4, 0.0]]") +
+             test::y_symmetry("bar.ymin") + test::y_symmetry("bar.ymax");
   const fs::path out = dir / "out";
   const auto r = test::run_camouflet("run '" + (dir / "pulse.toml").string() + "' -o '" + out.string() +
                                      "' --threads 1");

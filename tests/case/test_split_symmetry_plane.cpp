@@ -9,7 +9,9 @@
 #include <string>
 
 #include "case/case_reader.hpp"
+#include "common/test_output.hpp"
 #include "common/verification.hpp"
+#include "soil_case_text.hpp"
 #include "solver/run.hpp"
 
 namespace camouflet {
@@ -20,21 +22,12 @@ namespace fs = std::filesystem;
 // A sin^2 velocity pulse along a strip through a joined SPH zone, between the
 // symmetry planes y = 0 and y = 0.1; the strip is one block or two.
 std::string pulse_case(bool split) {
-  std::string c = R"([run]
-geometry = "plane_strain"
-end_time = 6e-4
-cfl = 0.5
-[materials.soil]
-eos = { type = "linear", density = 2000.0, bulk_modulus = 6.6667e8 }
-strength = { type = "elastic", shear_modulus = 4.0e8 }
-)";
+  std::string c = test::soil_case_header("geometry = \"plane_strain\"\nend_time = 6e-4\ncfl = 0.5\n");
+  const auto pair = [](const std::string& a, const std::string& b) { return "[" + a + ", " + b + "]"; };
   const auto block = [&](const char* name, double x0, double length, int cells) {
-    c += "[[parts]]\nname = \"" + std::string(name) + "\"\nmaterial = \"soil\"\nblock = { origin = [" +
-         std::to_string(x0) + ", 0.0], size = [" + std::to_string(length) + ", 0.1], cells = [" +
-         std::to_string(cells) + ", 4] }\n";
-    for (const char* side : {"ymin", "ymax"})
-      c += "[[boundary]]\ntype = \"symmetry\"\nset = \"" + std::string(name) + "." + side +
-           "\"\nnormal = [0.0, 1.0]\n";
+    c += test::soil_block(name, pair(std::to_string(x0), "0.0"), pair(std::to_string(length), "0.1"),
+                          pair(std::to_string(cells), "4"));
+    for (const char* side : {"ymin", "ymax"}) c += test::y_symmetry(std::string(name) + "." + side);
   };
   if (split) {
     block("left", 0.0, 0.6, 24);
@@ -42,31 +35,16 @@ strength = { type = "elastic", shear_modulus = 4.0e8 }
   } else {
     block("left", 0.0, 1.2, 48);
   }
-  c += R"([[parts]]
-name = "zone"
-kind = "sph"
-material = "soil"
-join = true
-fill = { shape = "box", min = [0.4, 0.0], max = [0.8, 0.1], spacing = 0.025 }
-[[boundary]]
-type = "velocity"
-set = "left.xmin"
-components = ["x"]
-value = [1.0]
-history = [[0.0, 0.0], [6.4e-5, 0.5], [1.29e-4, 1.0], [1.93e-4, 0.5], [2.58e-4, 0.0]]
-)";
+  c += test::joined_strip_zone;
+  c += test::x_velocity_pulse("left.xmin",
+                              "[[0.0, 0.0], [6.4e-5, 0.5], [1.29e-4, 1.0], [1.93e-4, 0.5], [2.58e-4, 0.0]]");
   return c;
 }
 
 RunSummary run_pulse(bool split) {
-  const fs::path out =
-      fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / (split ? "split_symmetry_two" : "split_symmetry_one");
-  fs::remove_all(out);
-  RunOptions options;
-  options.output_dir = out;
-  options.progress = ProgressStyle::none;
-  options.threads = 1;
-  return run_model(read_case_text(pulse_case(split), split ? "two.toml" : "one.toml"), options);
+  const fs::path out = test::fresh_test_output(split ? "split_symmetry_two" : "split_symmetry_one");
+  return run_model(read_case_text(pulse_case(split), split ? "two.toml" : "one.toml"),
+                   test::quiet_run_options(out));
 }
 
 TEST(SplitSymmetryPlane, ParticlesAreMirroredOnce) {

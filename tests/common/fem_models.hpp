@@ -72,6 +72,13 @@ inline BoundaryCondition velocity(const std::string& set, int component, double 
   return bc;
 }
 
+// A velocity ramped from 0 to `value` over `ramp` seconds, then held.
+inline BoundaryCondition ramped_velocity(const std::string& set, int component, double value, double ramp) {
+  BoundaryCondition bc = velocity(set, component, value);
+  bc.history = TimeHistory{{0.0, ramp}, {0.0, 1.0}};
+  return bc;
+}
+
 inline BoundaryCondition pressure(const std::string& face_set, double p,
                                   std::optional<TimeHistory> history = {}) {
   BoundaryCondition bc;
@@ -80,6 +87,30 @@ inline BoundaryCondition pressure(const std::string& face_set, double p,
   bc.value[0] = p;
   bc.history = std::move(history);
   return bc;
+}
+
+// The erosion tests' bar (plane strain, 0.1 m x 0.01 m, 20 x 2 quads):
+// parts left | seed | right, the seed the middle 0.01 m column (2 elements)
+// of material "seed", the rest of material "steel"; symmetric about y = 0
+// and x = 0, its right end pulled along x at 10 m/s, ramped up over 20 us.
+// The caller sets the erosion criteria and the run.
+inline Model seeded_pulled_bar(std::shared_ptr<const Material> steel, std::shared_ptr<const Material> seed) {
+  Model model;
+  model.run.mode = GeometryMode::plane_strain;
+  model.mesh.dimension = 2;
+  model.materials.push_back({"steel", std::move(steel), {}});
+  model.materials.push_back({"seed", std::move(seed), {}});
+  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}});
+  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}});
+  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}});
+  add_block(model.mesh, {"left", 0, {0, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
+  add_block(model.mesh, {"seed", 1, {0.045, 0, 0}, {0.01, 0.01, 0}, {1, 2, 1}});
+  add_block(model.mesh, {"right", 2, {0.055, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
+  for (const char* s : {"left.ymin", "seed.ymin", "right.ymin"})
+    model.boundaries.push_back(symmetry(s, {0, 1, 0}));
+  model.boundaries.push_back(symmetry("left.xmin", {1, 0, 0}));
+  model.boundaries.push_back(ramped_velocity("right.xmax", 0, 10.0, 20e-6));
+  return model;
 }
 
 }  // namespace camouflet::test

@@ -41,6 +41,23 @@ inline TimeHistory sin2_pulse(double duration) {
   return h;
 }
 
+// Appends an SPH part "zone" of material 0 to `model` and returns the fill
+// of the box [min, max] at `spacing` (m) for it: what make_joined_zone takes.
+inline ParticleFillSpec zone_box(Model& model, double spacing, std::array<double, 3> min,
+                                 std::array<double, 3> max) {
+  Part zone;
+  zone.name = "zone";
+  zone.kind = PartKind::sph;
+  zone.material = 0;
+  model.parts.push_back(zone);
+  ParticleFillSpec fill;
+  fill.part = static_cast<int>(model.parts.size()) - 1;
+  fill.spacing = spacing;
+  fill.region.min = min;
+  fill.region.max = max;
+  return fill;
+}
+
 // Lateral extent of the column: `cells` elements wide, starting at `inner` (m) from the axis or
 // the x = 0 plane (inner > 0 in r-z: an annulus between two rollers, away from the axis).
 struct ColumnSection {
@@ -63,16 +80,8 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
   block.size[static_cast<std::size_t>(along)] = length;
   block.cells[static_cast<std::size_t>(along)] = cells;
   Model model = block_model(mode, {block}, c);
-  Part zone;
-  zone.name = "zone";
-  zone.kind = PartKind::sph;
-  zone.material = 0;
-  model.parts.push_back(zone);
-  ParticleFillSpec fill;
-  fill.part = 1;
-  fill.spacing = spacing;
-  fill.region.min = {section.inner, 0, 0};
-  fill.region.max = {section.inner + width, width, width};
+  ParticleFillSpec fill =
+      zone_box(model, spacing, {section.inner, 0, 0}, {section.inner + width, width, width});
   fill.region.min[static_cast<std::size_t>(along)] = 0.4;
   fill.region.max[static_cast<std::size_t>(along)] = 0.8;
   make_joined_zone(model, fill);
@@ -169,10 +178,10 @@ JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const
     const double total = e.kinetic + e.internal + e.hourglass;
     if (e_start == 0.0 && solver.time() >= t_start) e_start = total, w_start = e.boundary_work;
     if (std::getenv("JOIN_DEBUG") && solver.cycle() % 50 == 0)
-      std::printf("t %.3f kin %.5g int %.5g hg %.5g visc %.5g sph_kin %.5g sph_int %.5g join %.5g face %.5g\n", t,
-                  e.kinetic, e.internal, e.hourglass, e.viscous, solver.particles()->kinetic_energy(),
-                  solver.particles()->internal_energy(), solver.energy_split().join,
-                  solver.energy_split().join_face);
+      std::printf(
+          "t %.3f kin %.5g int %.5g hg %.5g visc %.5g sph_kin %.5g sph_int %.5g join %.5g face %.5g\n", t,
+          e.kinetic, e.internal, e.hourglass, e.viscous, solver.particles()->kinetic_energy(),
+          solver.particles()->internal_energy(), solver.energy_split().join, solver.energy_split().join_face);
     if (r.energy_change == 0.0 && solver.time() >= t_stop) {
       r.energy_change = (total - e_start) / e_start;
       r.join_work = (e.boundary_work - w_start) / e_start;

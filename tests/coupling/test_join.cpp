@@ -119,16 +119,7 @@ TEST(SphFemJoin, SpacingRatioBeyondLimitIsRefused) {
 TEST(SphFemJoin, RegionOutsideTheMeshIsRefused) {
   Model model =
       test::block_model(GeometryMode::plane_strain, {{"bar", 0, {0, 0, 0}, {1, 1, 0}, {10, 10, 1}}}, {});
-  Part zone;
-  zone.name = "zone";
-  zone.kind = PartKind::sph;
-  zone.material = 0;
-  model.parts.push_back(zone);
-  ParticleFillSpec fill;
-  fill.part = 1;
-  fill.spacing = 0.1;
-  fill.region.min = {2, 2, 0};
-  fill.region.max = {3, 3, 0};
+  const ParticleFillSpec fill = test::zone_box(model, 0.1, {2, 2, 0}, {3, 3, 0});
   try {
     make_joined_zone(model, fill);
     FAIL() << "a join between non-adjacent parts was accepted";

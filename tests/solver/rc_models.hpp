@@ -32,11 +32,21 @@ inline const JohnsonCookParameters& johnson_cook_of(const Material& m) {
   return dynamic_cast<const JohnsonCookStrength&>(*m.strength()).parameters();
 }
 
-// A velocity ramped from 0 to `value` over `ramp` seconds, then held.
-inline BoundaryCondition ramped_velocity(const std::string& set, int component, double value, double ramp) {
-  BoundaryCondition bc = velocity(set, component, value);
-  bc.history = TimeHistory{{0.0, ramp}, {0.0, 1.0}};
-  return bc;
+// An elastic host strip (plane strain, 0.1 m x 0.02 m, 5 x 1 quads;
+// material and part "host"), its left end held and its right end pulled along
+// x at 0.1 m/s, y = 0 held: a homogeneous stretch along x for 1 ms.
+inline Model pulled_host_strip() {
+  Model model;
+  model.run.mode = GeometryMode::plane_strain;
+  model.mesh.dimension = 2;
+  model.run.end_time = 1e-3;
+  model.materials.push_back({"host", elastic_material({2000.0, 1e8, 5e7, 0.0}, "host"), {}});
+  model.parts.push_back(Part{"host", PartKind::fem, 0, {}, {}});
+  add_block(model.mesh, {"host", 0, {0, 0, 0}, {0.1, 0.02, 0}, {5, 1, 1}});
+  model.boundaries.push_back(velocity("host.xmin", 0, 0.0));
+  model.boundaries.push_back(velocity("host.xmax", 0, 0.1));
+  model.boundaries.push_back(velocity("host.ymin", 1, 0.0));
+  return model;
 }
 
 // Current cross-section (m^2; m^2/m in plane strain) of element e normal to

@@ -1,6 +1,7 @@
 #pragma once
 // Shared pieces of the restart tests (issue 9): a small FEM case, a small
-// particle model, and comparing two runs' final checkpoints array by array.
+// particle model, a run split in two at a checkpoint, and comparing two runs'
+// final checkpoints array by array.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +10,9 @@
 #include <string>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "common/test_output.hpp"
 #include "solver/run.hpp"
+#include "sph/sph_test_models.hpp"
 
 namespace camouflet::test {
 
@@ -88,6 +91,48 @@ inline void expect_same_final_state(const std::filesystem::path& a, const std::f
   EXPECT_GT(compared, 50u);
 }
 
+// Two elastic steel blocks of particles colliding at 40 m/s (plane strain),
+// stopped after `max_cycles`; the callers add their gauges.
+inline Model colliding_particle_blocks(std::int64_t max_cycles) {
+  Model model;
+  model.run.mode = GeometryMode::plane_strain;
+  model.run.end_time = 1.5e-4;
+  model.run.cfl = 0.5;
+  model.run.max_cycles = max_cycles;
+  model.output.field_interval = 5e-5;
+  model.checkpoint.interval_cycles = 1000000;
+  const auto solid = elastic_solid("steel", 7800.0, 1.6e11, 8.0e10);
+  add_sph_part(model, "striker", solid, box_fill({0.0, 0.0, 0.0}, {0.04, 0.04, 0.0}, 0.004),
+               {40.0, 0.0, 0.0});
+  add_sph_part(model, "target", solid, box_fill({0.0401, 0.0, 0.0}, {0.1, 0.04, 0.0}, 0.004));
+  return model;
+}
+
+// A model built in code run to its end and in two halves (one thread):
+// `make(max_cycles)` gives the model stopped after that many cycles. `root`
+// is emptied; the uninterrupted run writes <root>/full, the split one
+// <root>/split: to half the cycles, then on from that checkpoint.
+struct SplitRun {
+  RunSummary reference;  // the uninterrupted run
+  std::int64_t half = 0;
+  RunSummary first, second;  // the split run before and after its restart
+};
+
+template <class MakeModel>
+SplitRun run_split(const std::filesystem::path& root, MakeModel make) {
+  std::filesystem::remove_all(root);
+  SplitRun r;
+  RunOptions o = quiet_run_options(root / "full");
+  const auto full = make(std::numeric_limits<std::int64_t>::max());
+  r.reference = run_model(full, o);
+  r.half = r.reference.cycles / 2;
+  o.output_dir = root / "split";
+  r.first = run_model(make(r.half), o);
+  o.restart = "latest";
+  r.second = run_model(full, o);
+  return r;
+}
+
 // A model built in code (no case file): `make(max_cycles)` gives the model
 // stopped after that many cycles. Runs it to the end in <root>/full, then to
 // half its cycles in <root>/split and on from that checkpoint, and expects
@@ -98,21 +143,10 @@ inline void expect_same_final_state(const std::filesystem::path& a, const std::f
 template <class MakeModel>
 std::int64_t expect_split_run_bit_identical(const std::filesystem::path& root, MakeModel make,
                                             const std::string& gauge_csv) {
-  std::filesystem::remove_all(root);
-  RunOptions o;
-  o.progress = ProgressStyle::none;
-  o.threads = 1;
-  o.output_dir = root / "full";
-  const auto full = make(std::numeric_limits<std::int64_t>::max());
-  const RunSummary reference = run_model(full, o);
-  const std::int64_t half = reference.cycles / 2;
-  o.output_dir = root / "split";
-  const auto first = make(half);
-  EXPECT_EQ(run_model(first, o).cycles, half);
-  o.restart = "latest";
-  const RunSummary second = run_model(full, o);
-  EXPECT_EQ(second.cycles, reference.cycles);
-  EXPECT_EQ(second.time, reference.time);
+  const SplitRun run = run_split(root, make);
+  EXPECT_EQ(run.first.cycles, run.half);
+  EXPECT_EQ(run.second.cycles, run.reference.cycles);
+  EXPECT_EQ(run.second.time, run.reference.time);
   const std::string a = read_text(root / "full" / gauge_csv), b = read_text(root / "split" / gauge_csv);
   EXPECT_FALSE(a.empty()) << gauge_csv;
   EXPECT_EQ(a, b) << gauge_csv << " differs after the restart";
@@ -124,7 +158,7 @@ std::int64_t expect_split_run_bit_identical(const std::filesystem::path& root, M
   }
   EXPECT_TRUE(std::filesystem::exists(root / "full" / "energy.csv"));
   expect_same_final_state(root / "full", root / "split");
-  return reference.cycles;
+  return run.reference.cycles;
 }
 
 // One array of a checkpoint file (empty when it has none by that name).

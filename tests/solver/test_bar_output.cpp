@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/test_output.hpp"
 #include "common/verification.hpp"
 #include "solver/rc_models.hpp"
 #include "solver/run.hpp"
@@ -16,18 +17,9 @@ using namespace camouflet;
 
 TEST(BarOutput, BarsCsvHoldsTheAxialStrainHistory) {
   test::use_threads(1);
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.mesh.dimension = 2;
-  model.run.end_time = 1e-3;
-  model.materials.push_back({"host", test::elastic_material({2000.0, 1e8, 5e7, 0.0}, "host"), {}});
-  model.materials.push_back({"steel", test::steel_1006(), {}});
-  model.parts.push_back(Part{"host", PartKind::fem, 0, {}, {}});
-  add_block(model.mesh, {"host", 0, {0, 0, 0}, {0.1, 0.02, 0}, {5, 1, 1}});
   // The left end held, the right end pulled: a homogeneous stretch of the host along x.
-  model.boundaries.push_back(test::velocity("host.xmin", 0, 0.0));
-  model.boundaries.push_back(test::velocity("host.xmax", 0, 0.1));
-  model.boundaries.push_back(test::velocity("host.ymin", 1, 0.0));
+  Model model = test::pulled_host_strip();
+  model.materials.push_back({"steel", test::steel_1006(), {}});
   BarSet bar;
   bar.name = "rebar";
   bar.from = {0.0, 0.01, 0.0};
@@ -38,10 +30,7 @@ TEST(BarOutput, BarsCsvHoldsTheAxialStrainHistory) {
   model.bars.push_back(bar);
   const auto dir = std::filesystem::temp_directory_path() / "camouflet_bar_output_test";
   std::filesystem::remove_all(dir);
-  RunOptions options;
-  options.output_dir = dir;
-  options.progress = ProgressStyle::none;
-  run_model(model, options);
+  run_model(model, test::quiet_run_options(dir, 0));
 
   std::ifstream in(dir / "bars.csv");
   ASSERT_TRUE(in) << "bars.csv was not written";

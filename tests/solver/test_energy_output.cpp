@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/test_output.hpp"
 #include "common/verification.hpp"
 #include "solver/rc_models.hpp"
 #include "solver/run.hpp"
@@ -19,22 +20,10 @@ using namespace camouflet;
 
 TEST(EnergyOutput, ConstraintWorkOfAPulledStripIsTheEnergyGained) {
   test::use_threads(1);
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.mesh.dimension = 2;
-  model.run.end_time = 1e-3;
-  model.materials.push_back({"host", test::elastic_material({2000.0, 1e8, 5e7, 0.0}, "host"), {}});
-  model.parts.push_back(Part{"host", PartKind::fem, 0, {}, {}});
-  add_block(model.mesh, {"host", 0, {0, 0, 0}, {0.1, 0.02, 0}, {5, 1, 1}});
-  model.boundaries.push_back(test::velocity("host.xmin", 0, 0.0));
-  model.boundaries.push_back(test::velocity("host.xmax", 0, 0.1));
-  model.boundaries.push_back(test::velocity("host.ymin", 1, 0.0));
+  const Model model = test::pulled_host_strip();
   const auto dir = std::filesystem::temp_directory_path() / "camouflet_energy_output_test";
   std::filesystem::remove_all(dir);
-  RunOptions options;
-  options.output_dir = dir;
-  options.progress = ProgressStyle::none;
-  const RunSummary summary = run_model(model, options);
+  const RunSummary summary = run_model(model, test::quiet_run_options(dir, 0));
 
   std::ifstream in(dir / "energy.csv");
   ASSERT_TRUE(in) << "energy.csv was not written";

@@ -29,28 +29,13 @@ struct ErosionResult {
 
 ErosionResult pull_to_erosion() {
   test::use_threads(1);
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.mesh.dimension = 2;
-  model.run.end_time = 1.0;
   test::ElasticConstants steel{7800.0, 160e9, 80e9, 300e6};
   test::ElasticConstants weak = steel;
   weak.yield_stress = 270e6;
-  model.materials.push_back({"steel", test::elastic_material(steel, "steel"), {}});
-  model.materials.push_back({"seed", test::elastic_material(weak, "seed"), {}});
+  Model model =
+      test::seeded_pulled_bar(test::elastic_material(steel, "steel"), test::elastic_material(weak, "seed"));
+  model.run.end_time = 1.0;
   model.erosion = {{threshold, 0.0}, {threshold, 0.0}};
-  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}});
-  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}});
-  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}});
-  add_block(model.mesh, {"left", 0, {0, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
-  add_block(model.mesh, {"seed", 1, {0.045, 0, 0}, {0.01, 0.01, 0}, {1, 2, 1}});
-  add_block(model.mesh, {"right", 2, {0.055, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
-  for (const char* s : {"left.ymin", "seed.ymin", "right.ymin"})
-    model.boundaries.push_back(test::symmetry(s, {0, 1, 0}));
-  model.boundaries.push_back(test::symmetry("left.xmin", {1, 0, 0}));
-  BoundaryCondition pull = test::velocity("right.xmax", 0, 10.0);
-  pull.history = TimeHistory{{0.0, 20e-6}, {0.0, 1.0}};
-  model.boundaries.push_back(pull);
 
   Solver<2> solver(model);
   const double mass0 = std::accumulate(solver.node_mass().begin(), solver.node_mass().end(), 0.0);

@@ -45,27 +45,12 @@ std::shared_ptr<const Material> steel(const std::string& name, double yield, dou
 
 TEST(JohnsonCookErosion, FailedSeedErodesAndTheEnergyBalanceCloses) {
   test::use_threads(1);
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.mesh.dimension = 2;
-  model.run.end_time = 1.0;
   // Bar: Johnson & Cook 1985 fracture constants (eps_f = 0.98 in tension);
   // seed: 10 % weaker and failing at eps_p = 0.05.
-  model.materials.push_back({"steel", steel("steel", 792e6, -0.80, 2.10, -0.50), {}});
-  model.materials.push_back({"seed", steel("seed", 712e6, 0.05, 0.0, 0.0), {}});
+  Model model = test::seeded_pulled_bar(steel("steel", 792e6, -0.80, 2.10, -0.50),
+                                        steel("seed", 712e6, 0.05, 0.0, 0.0));
+  model.run.end_time = 1.0;
   model.erosion = {{0.0, 1.0}, {0.0, 1.0}};  // erode at damage 1
-  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}});
-  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}});
-  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}});
-  add_block(model.mesh, {"left", 0, {0, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
-  add_block(model.mesh, {"seed", 1, {0.045, 0, 0}, {0.01, 0.01, 0}, {1, 2, 1}});
-  add_block(model.mesh, {"right", 2, {0.055, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
-  for (const char* s : {"left.ymin", "seed.ymin", "right.ymin"})
-    model.boundaries.push_back(test::symmetry(s, {0, 1, 0}));
-  model.boundaries.push_back(test::symmetry("left.xmin", {1, 0, 0}));
-  BoundaryCondition pull = test::velocity("right.xmax", 0, 10.0);
-  pull.history = TimeHistory{{0.0, 20e-6}, {0.0, 1.0}};
-  model.boundaries.push_back(pull);
 
   Solver<2> solver(model);
   std::vector<std::size_t> seed;

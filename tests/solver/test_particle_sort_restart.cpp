@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <sstream>
 
-#include "../sph/sph_test_models.hpp"
 #include "common/verification.hpp"
 #include "restart_helpers.hpp"
 #include "solver/run.hpp"
@@ -20,25 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "particle-sort" / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
 Model sorted_particle_model(std::int64_t max_cycles, int sort_interval) {
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.run.end_time = 1.5e-4;
-  model.run.cfl = 0.5;
-  model.run.max_cycles = max_cycles;
-  model.output.field_interval = 5e-5;
-  model.checkpoint.interval_cycles = 1000000;
+  Model model = test::colliding_particle_blocks(max_cycles);
   model.sph.set_number("sort_interval", sort_interval);
-  const auto solid = test::elastic_solid("steel", 7800.0, 1.6e11, 8.0e10);
-  test::add_sph_part(model, "striker", solid, test::box_fill({0.0, 0.0, 0.0}, {0.04, 0.04, 0.0}, 0.004),
-                     {40.0, 0.0, 0.0});
-  test::add_sph_part(model, "target", solid, test::box_fill({0.0401, 0.0, 0.0}, {0.1, 0.04, 0.0}, 0.004));
   GaugeGroup follow, fixed;
   follow.name = "follow";
   follow.points.push_back({"middle", {0.06, 0.02, 0.0}, {}});
@@ -68,27 +51,19 @@ double csv_difference(const std::string& a, const std::string& b) {
 }
 
 TEST(ParticleSortRestart, SortedRunRestartsBitIdenticalAndGaugesMatchUnsorted) {
-  const fs::path root = scratch("run");
-  RunOptions o;
-  o.progress = ProgressStyle::none;
-  o.threads = 1;
-  o.output_dir = root / "full";
-  const Model full = sorted_particle_model(std::numeric_limits<std::int64_t>::max(), 1);
-  const RunSummary reference = run_model(full, o);
-  ASSERT_GT(reference.cycles, 20);
-  const std::int64_t half = reference.cycles / 2;
-  o.output_dir = root / "split";
-  EXPECT_EQ(run_model(sorted_particle_model(half, 1), o).cycles, half);
-  o.restart = "latest";
-  EXPECT_EQ(run_model(full, o).cycles, reference.cycles);
+  const fs::path root = test::fresh_test_output("particle-sort/run");
+  const test::SplitRun run =
+      test::run_split(root, [](std::int64_t max_cycles) { return sorted_particle_model(max_cycles, 1); });
+  ASSERT_GT(run.reference.cycles, 20);
+  EXPECT_EQ(run.first.cycles, run.half);
+  EXPECT_EQ(run.second.cycles, run.reference.cycles);
   for (const char* csv : {"follow.csv", "fixed.csv"})
     EXPECT_EQ(test::read_text(root / "full" / csv), test::read_text(root / "split" / csv)) << csv;
   test::expect_same_final_state(root / "full", root / "split");
 
   // The same run without re-sorting: the gauges agree up to round-off.
-  o.restart.clear();
-  o.output_dir = root / "unsorted";
-  run_model(sorted_particle_model(std::numeric_limits<std::int64_t>::max(), 0), o);
+  run_model(sorted_particle_model(std::numeric_limits<std::int64_t>::max(), 0),
+            test::quiet_run_options(root / "unsorted"));
   const std::string follow_sorted = test::read_text(root / "full" / "follow.csv");
   ASSERT_EQ(follow_sorted.size() > 0, true);
   const double d_follow = csv_difference(follow_sorted, test::read_text(root / "unsorted" / "follow.csv"));

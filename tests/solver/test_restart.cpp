@@ -7,7 +7,6 @@
 
 #include <filesystem>
 
-#include "../sph/sph_test_models.hpp"
 #include "case/case_fingerprint.hpp"
 #include "case/case_reader.hpp"
 #include "common/verification.hpp"
@@ -21,16 +20,11 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "restart" / name;
-  fs::remove_all(dir);
-  return dir;
+  return test::fresh_test_output(fs::path("restart") / name);
 }
 
 RunOptions options_for(const fs::path& out, const fs::path& case_file) {
-  RunOptions o;
-  o.output_dir = out;
-  o.progress = ProgressStyle::none;
-  o.threads = 1;
+  RunOptions o = test::quiet_run_options(out);
   o.case_fingerprint = case_fingerprint(case_file);
   return o;
 }
@@ -121,17 +115,7 @@ TEST(Restart, DamagedLatestCheckpointIsRefusedAndThePreviousOneUsed) {
 
 // Two elastic blocks of particles colliding at 40 m/s (plane strain), a gauge in the struck block.
 Model particle_model(std::int64_t max_cycles) {
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.run.end_time = 1.5e-4;
-  model.run.cfl = 0.5;
-  model.run.max_cycles = max_cycles;
-  model.output.field_interval = 5e-5;
-  model.checkpoint.interval_cycles = 1000000;
-  const auto solid = test::elastic_solid("steel", 7800.0, 1.6e11, 8.0e10);
-  test::add_sph_part(model, "striker", solid, test::box_fill({0.0, 0.0, 0.0}, {0.04, 0.04, 0.0}, 0.004),
-                     {40.0, 0.0, 0.0});
-  test::add_sph_part(model, "target", solid, test::box_fill({0.0401, 0.0, 0.0}, {0.1, 0.04, 0.0}, 0.004));
+  Model model = test::colliding_particle_blocks(max_cycles);
   GaugeGroup group;
   group.name = "target";
   group.points.push_back({"middle", {0.06, 0.02, 0.0}, {}});
@@ -141,20 +125,10 @@ Model particle_model(std::int64_t max_cycles) {
 
 TEST(Restart, ParticleRunStoppedHalfWayAndRestartedIsBitIdentical) {
   const fs::path root = scratch("sph");
-  RunOptions o;
-  o.progress = ProgressStyle::none;
-  o.threads = 1;
-  o.output_dir = root / "full";
-  const Model full = particle_model(std::numeric_limits<std::int64_t>::max());
-  const RunSummary reference = run_model(full, o);
-  ASSERT_GT(reference.cycles, 20);
-  const std::int64_t half = reference.cycles / 2;
-  o.output_dir = root / "split";
-  const Model first = particle_model(half);
-  EXPECT_EQ(run_model(first, o).cycles, half);
-  o.restart = "latest";
-  const RunSummary s2 = run_model(full, o);
-  EXPECT_EQ(s2.cycles, reference.cycles);
+  const test::SplitRun run = test::run_split(root, particle_model);
+  ASSERT_GT(run.reference.cycles, 20);
+  EXPECT_EQ(run.first.cycles, run.half);
+  EXPECT_EQ(run.second.cycles, run.reference.cycles);
   EXPECT_EQ(test::read_text(root / "full" / "target.csv"), test::read_text(root / "split" / "target.csv"));
   test::expect_same_final_state(root / "full", root / "split");
 }

@@ -13,6 +13,7 @@
 
 #include "common/fem_models.hpp"
 #include "common/verification.hpp"
+#include "coupling/join_models.hpp"
 #include "coupling/joined_zone.hpp"
 #include "mesh/particle_fill.hpp"
 #include "mesh/rebar_layers.hpp"
@@ -25,7 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-  return fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "restart-coupled" / name;
+  return test::fresh_test_output(fs::path("restart-coupled") / name);
 }
 
 GaugeGroup gauges(const std::string& name, std::initializer_list<std::array<double, 3>> points) {
@@ -84,25 +85,12 @@ Model rebar_model(std::int64_t max_cycles) {
 // 10 m/s with a weaker seed in the middle that erodes at a geometric strain
 // of 0.15, after the half-way restart: the accumulated strain must survive it.
 Model erosion_model(std::int64_t max_cycles) {
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.mesh.dimension = 2;
   test::ElasticConstants steel{7800.0, 160e9, 80e9, 300e6};
   test::ElasticConstants weak = steel;
   weak.yield_stress = 270e6;
-  model.materials.push_back({"steel", test::elastic_material(steel, "steel"), {}});
-  model.materials.push_back({"seed", test::elastic_material(weak, "seed"), {}});
+  Model model =
+      test::seeded_pulled_bar(test::elastic_material(steel, "steel"), test::elastic_material(weak, "seed"));
   model.erosion = {{0.15, 0.0}, {0.15, 0.0}};
-  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}});
-  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}});
-  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}});
-  add_block(model.mesh, {"left", 0, {0, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
-  add_block(model.mesh, {"seed", 1, {0.045, 0, 0}, {0.01, 0.01, 0}, {1, 2, 1}});
-  add_block(model.mesh, {"right", 2, {0.055, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
-  for (const char* s : {"left.ymin", "seed.ymin", "right.ymin"})
-    model.boundaries.push_back(test::symmetry(s, {0, 1, 0}));
-  model.boundaries.push_back(test::symmetry("left.xmin", {1, 0, 0}));
-  model.boundaries.push_back(test::ramped_velocity("right.xmax", 0, 10.0, 20e-6));
   model.gauges.push_back(gauges("bar", {{0.02, 0.005, 0.0}, {0.05, 0.005, 0.0}, {0.08, 0.005, 0.0}}));
   run_settings(model, 3.4e-4, max_cycles);  // erodes at ~0.29 ms
   return model;
@@ -116,17 +104,7 @@ Model join_model(std::int64_t max_cycles) {
   const double width = 0.04;
   Model model =
       test::block_model(GeometryMode::plane_strain, {{"bar", 0, {0, 0, 0}, {0.6, width, 0}, {60, 4, 1}}}, c);
-  Part zone;
-  zone.name = "zone";
-  zone.kind = PartKind::sph;
-  zone.material = 0;
-  model.parts.push_back(zone);
-  ParticleFillSpec fill;
-  fill.part = 1;
-  fill.spacing = 0.01;
-  fill.region.min = {0.2, 0.0, 0.0};
-  fill.region.max = {0.4, width, 0.0};
-  make_joined_zone(model, fill);
+  make_joined_zone(model, test::zone_box(model, 0.01, {0.2, 0.0, 0.0}, {0.4, width, 0.0}));
   model.boundaries.push_back(test::ramped_velocity("bar.xmin", 0, 1.0, 2e-5));
   model.boundaries.push_back(test::symmetry("bar.ymin", {0, 1, 0}));
   model.boundaries.push_back(test::symmetry("bar.ymax", {0, 1, 0}));

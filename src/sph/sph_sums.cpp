@@ -581,7 +581,7 @@ void SphSystem<D>::update_state(double dt, double time) {
     p_.planar_density[i] = eta_new[i];
     p_.smoothing_length[i] = h_new[i];
     p_.position[i] = x_end[i];
-    if (eta_new[i] < p_.reference_planar_density[i] * expansion_limit_) ++limited;
+    if (eta_new[i] < m[i] * kernel_.value(0.0, h_new[i])) ++limited;
   }
   volume_limited_ = limited;
   refresh_ghosts();

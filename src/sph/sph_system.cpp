@@ -26,7 +26,6 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   if (model.particles.coordinates.size() != D * model.particles.count())
     throw std::invalid_argument("SphSystem: particle coordinates do not match the dimension");
   kernel_.kind = options_.kernel;
-  expansion_limit_ = std::pow(options_.h_max_factor, -D);
   // Artificial stress weight f^n, f = W(r, h_ij) / W(dp, h_ij) with dp = h_ij / smoothing_factor:
   // the normalisation cancels, f = w(r / h_ij) / w(1 / smoothing_factor).
   tensile_shape_inverse_ = 1.0 / kernel_.shape(1.0 / options_.smoothing_factor);

@@ -21,7 +21,7 @@
 // energy-conjugate to its own continuity equation; SphOptions::volume_form
 // = false selects the classic pair (continuity weight m_j / eta_i instead).
 // In every pair weight eta_j stands for quadrature_density(j) (below): eta_j,
-// but no lower than the most expanded state the smoothing length can follow.
+// but no lower than m_j W(0, h_j), its own term of the summation density.
 //   energy       Material::update from D and the density change (p dv is then
 //                exactly the work of the pressure part of the momentum sum),
 //                plus the viscous heating 1/2 sum_j m_j Pi_ij (v_i - v_j) . grad_i W_ij.
@@ -165,17 +165,16 @@ class SphSystem {
     return pair_gradient(i, j, grad);
   }
   // Planar density of point k as the pair sums weigh it (volume m / eta_q in the continuity,
-  // velocity gradient, momentum and viscosity): eta itself, but never below
-  // reference x h_max_factor^-D, the most expanded state the smoothing length can follow
-  // (h = h0 (eta0 / eta)^(1/D) stops at h_max_factor h0). A particle expanded past it keeps
-  // its own eta, rho and pressure; only its weight in its neighbours' sums stops growing,
-  // which bounds the continuity rate (docs/theory/sph.md, "Ejecta"). Ghosts take the limit
-  // of their source, coupling points (FEM) none.
+  // velocity gradient, momentum and viscosity): eta itself, but never below m W(0, h), the
+  // point's own term of the summation density, so that V_q W(0, h) <= 1: no point fills
+  // more than the whole partition of unity at its own position. Inactive while h follows
+  // the density (there m W(0, h) = 0.32 eta in 2-D, 0.18 eta in 3-D at h = 1.2 spacings);
+  // it binds only particles expanded far past h_max_factor, whose weight in their
+  // neighbours' sums would otherwise grow without bound (docs/theory/sph.md, "Ejecta").
+  // The particle's own eta, rho and pressure are not limited. Coupling points (FEM): none.
   double quadrature_density(std::size_t k) const {
-    const std::size_t n = p_.real;
-    const std::size_t owner = k < n ? k : (k - n < ghosts_.size() ? ghosts_[k - n].source : k);
-    if (owner >= n) return p_.planar_density[k];
-    return std::max(p_.planar_density[k], p_.reference_planar_density[owner] * expansion_limit_);
+    if (k >= p_.real + ghosts_.size()) return p_.planar_density[k];
+    return std::max(p_.planar_density[k], p_.mass[k] * kernel_.value(0.0, p_.smoothing_length[k]));
   }
   // Particles whose planar density is below that limit after the last update_state().
   std::size_t volume_limited_count() const { return volume_limited_; }
@@ -288,7 +287,6 @@ class SphSystem {
   std::vector<unsigned char> has_tensile_;         // artificial stress R != 0, per point
   double tensile_shape_inverse_ = 1.0;             // 1 / w(1 / smoothing_factor): W(dp, h) = C w / h^D
   int tensile_power_integer_ = 0;                  // artificial_stress_power when a small integer, else 0
-  double expansion_limit_ = 0.0;                   // h_max_factor^-D (quadrature_density)
   std::size_t volume_limited_ = 0;                 // volume_limited_count()
   std::size_t external_begin_ = 0, external_count_ = 0;  // coupling seam
   ExternalProvider external_provider_;

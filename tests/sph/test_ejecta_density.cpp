@@ -5,9 +5,9 @@
 // drift apart slowly stay in each other's support, each one's expansion
 // raises the other's rate, d(1/V)/dt = -const, and V -> infinity in finite
 // time (the coarse buried case with max_dt = 1.5e-6 stopped on it at 17.4 ms
-// with "density 0"). The sums now weigh such a point with the volume its
-// capped kernel was sized for, V_q = m / (eta0 h_max_factor^-D); its own
-// density keeps following the continuity equation.
+// with "density 0"). The sums now weigh a point with at most V_q = 1 / W(0, h)
+// (eta_q = max(eta, m W(0, h)), its own term of the summation density); its
+// own density keeps following the continuity equation.
 //
 // With V_q and h constant the continuity equation integrates exactly along
 // any path: d ln eta_i/dt = sum_j V_q,j v_ij . grad_i W_ij = d/dt sum_j
@@ -46,14 +46,13 @@ void place(SphSystem<D>& sph, std::size_t i, Vec<D> x, Vec<D> v, double eta, dou
 }
 
 // sum_j V_q,j W(|x_i - x_j|, h_ij) over the other particles and the mirror images across r = 0
-// of all (r-z), V_q,j = m_j h_max_factor^D / eta0_j: the potential whose change is ln eta_i.
+// of all (r-z), V_q,j = 1 / W(0, h_j) (all limited): the potential whose change is ln eta_i.
 template <int D>
 double volume_weighted_kernel_sum(const SphSystem<D>& sph, std::size_t i, bool axisymmetric) {
   const auto& p = sph.particles();
-  const double expansion = std::pow(sph.options().h_max_factor, D);
   double sum = 0.0;
   for (std::size_t j = 0; j < sph.size(); ++j) {
-    const double volume = p.mass[j] * expansion / p.reference_planar_density[j];
+    const double volume = 1.0 / sph.kernel().value(0.0, p.smoothing_length[j]);
     const double h = 0.5 * (p.smoothing_length[i] + p.smoothing_length[j]);
     if (j != i) sum += volume * sph.kernel().value(norm(p.position[i] - p.position[j]), h);
     if (axisymmetric) {
@@ -102,9 +101,9 @@ TEST(SphEjecta, SeparatingExpandedPairKeepsAFiniteDensity) {
   const auto& p = sph.particles();
   ASSERT_GT(norm(p.position[1] - p.position[0]), 2.0 * 0.48);
   EXPECT_EQ(sph.volume_limited_count(), 2u);
-  // ln(eta_end / eta_start) = -V_q W(0.24 m, 0.48 m) = -0.16 m^2 x 1.4186 /m^2 = -0.227.
+  // ln(eta_end / eta_start) = -V_q W(0.24 m, 0.48 m) = -W(0.24 m, 0.48 m) / W(0, 0.48 m) = -0.719.
   test::verify({"SPH ejecta pair expanded past the h cap, flying apart: density once out of reach",
-                "eta_start exp(-V_q W(r0, h_max)), continuity integrated exactly",
+                "eta_start exp(-W(r0, h_max) / W(0, h_max)), continuity integrated exactly",
                 eta_start * std::exp(-potential_start), p.planar_density[0], 1e-3, true, "kg/m^3"});
   EXPECT_DOUBLE_EQ(p.planar_density[0], p.planar_density[1]);
   // Out of reach the density no longer changes, the velocities never did (no pressure, no strength).
@@ -158,13 +157,12 @@ TEST(SphEjecta, AxisEjectaOfTheCoarseCaseFlyOn) {
 }
 
 TEST(SphEjecta, ExpandedGasCloudConservesEnergy) {
-  // A 3 x 3 cloud of ideal gas (gamma 1.4, e = 1e5 J/kg) expanded to eta0 / 50 with h at the
+  // A 3 x 3 cloud of ideal gas (gamma 1.4, e = 1e5 J/kg) expanded to eta0 / 100 with h at the
   // cap, particles 0.5 m apart (h0 = 0.12 m), let go for 10 ms: every pair weight is the limited
   // volume. The
   // momentum sum uses the same weights as the continuity equation, so the pressure work is
-  // the internal energy lost (were the momentum sum to keep V = m / eta, three times V_q, the
-  // kinetic energy gained would be three times the internal energy lost: error +20 %; without
-  // the limit, +1.8 %).
+  // the internal energy lost (were the momentum sum to keep V = m / eta, twice V_q, the
+  // kinetic energy gained would be twice the internal energy lost).
   omp_set_num_threads(1);
   Model model;
   model.run.mode = GeometryMode::plane_strain;
@@ -174,7 +172,7 @@ TEST(SphEjecta, ExpandedGasCloudConservesEnergy) {
   SphSystem<2> sph(model, SphOptions{});
   for (std::size_t i = 0; i < 9; ++i)
     place<2>(sph, i, Vec<2>{{0.5 * static_cast<double>(i % 3), 0.5 * static_cast<double>(i / 3)}}, Vec<2>{},
-             1.0 / 50.0, 1.0, 0.01, 0.12);
+             1.0 / 100.0, 1.0, 0.01, 0.12);
   sph.update_state(1e-12, 0.0);
   const double e0 = sph.internal_energy() + sph.kinetic_energy();
   double dt_last = 0.0;
@@ -182,7 +180,7 @@ TEST(SphEjecta, ExpandedGasCloudConservesEnergy) {
   const double kinetic = test::synchronised_kinetic_energy(sph, dt_last);
   ASSERT_GT(kinetic, 0.05 * e0);  // the cloud has done work
   EXPECT_EQ(sph.volume_limited_count(), 9u);
-  test::verify({"SPH gas cloud expanded past the h cap (3 x 3, plane): kinetic + internal energy",
+  test::verify({"SPH gas cloud expanded past the h cap (3 x 3, plane, eta0 / 100): kinetic + internal energy",
                 "conserved (pair weights of momentum and continuity equal)", e0,
                 sph.internal_energy() + kinetic, 0.005, true, "J"});
 }

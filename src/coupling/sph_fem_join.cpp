@@ -397,7 +397,8 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
       const Vec<D> grad = particles.corrected_gradient(i, j, dx * kernel.gradient_factor(r, hij));
       const Vec<D> dv = p.velocity[i] - p.velocity[j];
       const double vr = dot(dv, dx);
-      const double eta_i = p.planar_density[i], eta_j = p.planar_density[j];
+      // The pair weights of the sums (SphSystem::quadrature_density), so that the reaction matches.
+      const double eta_i = particles.quadrature_density(i), eta_j = particles.quadrature_density(j);
       double pi_ij = 0.0;
       if (vr < 0.0) {
         const double mu = hij * vr / (r2 + 0.01 * hij * hij);

@@ -101,6 +101,14 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     throw;
   }
   progress.done();
+  // SPH particles expanded past their smoothing-length cap weigh in their
+  // neighbours' sums with a limited volume (sph_system.hpp, quadrature_density).
+  if (const auto* particles = solver.particles();
+      particles && particles->volume_limited_count() > 0 && options.progress != ProgressStyle::none)
+    fmt::print(stderr,
+               "note: {} SPH particles end expanded past h_max_factor; their volume in the particle sums "
+               "is limited (docs/theory/sph.md, \"Ejecta\")\n",
+               particles->volume_limited_count());
   // The final state, so that a later run can go on with a later end time or
   // more cycles; written before finish() adds its closing row and snapshot,
   // which the continued run would not have.

@@ -58,7 +58,7 @@ void SphSystem<D>::pack_pair_points() {
     const SymTensor& s = p_.stress_term[k];
     const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
     for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
-    f[P::eta] = p_.planar_density[k];
+    f[P::eta] = sum_density_[k];  // eta_q: the pair weights (quadrature_density)
     f[P::c] = p_.wave_speed[k];
   }
 }

@@ -82,14 +82,17 @@ void SphSystem<D>::compute_accelerations() {
 template <int D>
 void SphSystem<D>::prepare_point_factors() {
   const std::size_t total = p_.position.size();
+  sum_density_.resize(total);
   inverse_density_.resize(total);
   point_volume_.resize(total);
   has_tensile_.resize(total);
   const bool tensile = options_.artificial_stress;
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < total; ++k) {
-    inverse_density_[k] = 1.0 / p_.planar_density[k];
-    point_volume_[k] = p_.mass[k] / p_.planar_density[k];
+    const double eta_q = quadrature_density(k);
+    sum_density_[k] = eta_q;
+    inverse_density_[k] = 1.0 / eta_q;
+    point_volume_[k] = p_.mass[k] / eta_q;
     const SymTensor& r = p_.tensile_term[k];
     has_tensile_[k] =
         tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
@@ -202,7 +205,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const auto& x = p_.position;
   const auto& v = p_.velocity;
   const auto& m = p_.mass;
-  const auto& eta = p_.planar_density;
+  const auto& eta = sum_density_;  // eta_q: the pair weights (quadrature_density)
   const auto& h = p_.smoothing_length;
   const auto& inv_eta = inverse_density_;
   const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
@@ -458,7 +461,7 @@ void SphSystem<D>::compute_correction() {
       const double r2 = dot(dx, dx);
       const double hij = pair_smoothing_length(h[i], h[j]);
       if (r2 >= support_factor * support_factor * hij * hij) continue;
-      const double f = kernel_.gradient_factor(std::sqrt(r2), hij) * p_.mass[j] / p_.planar_density[j];
+      const double f = kernel_.gradient_factor(std::sqrt(r2), hij) * p_.mass[j] / quadrature_density(j);
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) moment[a][b] -= f * dx[a] * dx[b];
     }
@@ -618,12 +621,15 @@ void SphSystem<D>::update_state(double dt, double time) {
     }
   }
 
-#pragma omp parallel for schedule(static)
+  std::size_t limited = 0;
+#pragma omp parallel for schedule(static) reduction(+ : limited)
   for (std::size_t i = 0; i < n; ++i) {
     p_.planar_density[i] = eta_new[i];
     p_.smoothing_length[i] = h_new[i];
     p_.position[i] = x_end[i];
+    if (eta_new[i] < m[i] * kernel_.value(0.0, h_new[i])) ++limited;
   }
+  volume_limited_ = limited;
   refresh_ghosts();
   correction_current_ = false;
   pair_dissipation_current_ = false;
@@ -648,7 +654,19 @@ void SphSystem<D>::update_state(double dt, double time) {
       p_.heating[i] = 0.0;
       p_.density[i] = rho;
     }
-    materials_[mat]->update(pts, ctx);
+    try {
+      materials_[mat]->update(pts, ctx);
+    } catch (const NumericalError& error) {
+      // The material names its batch slot: name the particle instead (its id, as output and gauges do).
+      if (error.kind() != EntityKind::material_point || error.id() < 0 ||
+          static_cast<std::size_t>(error.id()) >= members.size())
+        throw;
+      const std::size_t i = members[static_cast<std::size_t>(error.id())];
+      throw NumericalError(
+          EntityKind::particle, static_cast<std::int64_t>(p_.id[i]) + 1, error.quantity(),
+          fmt::format("{} (planar density {:.6g}, {:.3g} of its initial value)", error.detail(),
+                      p_.planar_density[i], p_.planar_density[i] / p_.reference_planar_density[i]));
+    }
   }
   gather_material_state();
 }

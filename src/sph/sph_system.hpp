@@ -20,6 +20,8 @@
 // Both are pairwise antisymmetric (momentum-conserving) and each is
 // energy-conjugate to its own continuity equation; SphOptions::volume_form
 // = false selects the classic pair (continuity weight m_j / eta_i instead).
+// In every pair weight eta_j stands for quadrature_density(j) (below): eta_j,
+// but no lower than m_j W(0, h_j), its own term of the summation density.
 //   energy       Material::update from D and the density change (p dv is then
 //                exactly the work of the pressure part of the momentum sum),
 //                plus the viscous heating 1/2 sum_j m_j Pi_ij (v_i - v_j) . grad_i W_ij.
@@ -163,6 +165,20 @@ class SphSystem {
   Vec<D> corrected_gradient(std::size_t i, std::size_t j, const Vec<D>& grad) const {
     return pair_gradient(i, j, grad);
   }
+  // Planar density of point k as the pair sums weigh it (volume m / eta_q in the continuity,
+  // velocity gradient, momentum and viscosity): eta itself, but never below m W(0, h), the
+  // point's own term of the summation density, so that V_q W(0, h) <= 1: no point fills
+  // more than the whole partition of unity at its own position. Inactive while h follows
+  // the density (there m W(0, h) = 0.32 eta in 2-D, 0.18 eta in 3-D at h = 1.2 spacings);
+  // it binds only particles expanded far past h_max_factor, whose weight in their
+  // neighbours' sums would otherwise grow without bound (docs/theory/sph.md, "Ejecta").
+  // The particle's own eta, rho and pressure are not limited. Coupling points (FEM): none.
+  double quadrature_density(std::size_t k) const {
+    if (k >= p_.real + ghosts_.size()) return p_.planar_density[k];
+    return std::max(p_.planar_density[k], p_.mass[k] * kernel_.value(0.0, p_.smoothing_length[k]));
+  }
+  // Particles whose planar density is below that limit after the last update_state().
+  std::size_t volume_limited_count() const { return volume_limited_; }
   const Kernel<D>& kernel() const { return kernel_; }
   // Every array and scalar a restart needs (checkpoints, issue 9; sph_state.cpp).
   void visit_state(StateVisitor& visitor);
@@ -188,8 +204,8 @@ class SphSystem {
   // storing per list entry the pair terms kick() books as heat; with
   // write_rates = false only those are stored (kick() after a restart).
   void force_pass(bool write_rates);
-  // 1/eta and the volume m/eta of every point (particles, ghosts, coupling points), and their packed
-  // records for the SIMD pair loops (pack_pair_points).
+  // eta_q, 1/eta_q and the volume m/eta_q of every point (particles, ghosts, coupling points), and
+  // their packed records for the SIMD pair loops (pack_pair_points).
   void prepare_point_factors();
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
 
@@ -274,11 +290,13 @@ class SphSystem {
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far
   std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to
-  std::vector<double> inverse_density_;            // 1/eta per point, scratch of the pair sums
-  std::vector<double> point_volume_;               // m/eta per point, scratch of the pair sums
+  std::vector<double> sum_density_;                // eta_q per point, scratch of the pair sums
+  std::vector<double> inverse_density_;            // 1/eta_q per point, scratch of the pair sums
+  std::vector<double> point_volume_;               // m/eta_q per point, scratch of the pair sums
   std::vector<unsigned char> has_tensile_;         // artificial stress R != 0, per point
   double tensile_shape_inverse_ = 1.0;             // 1 / w(1 / smoothing_factor): W(dp, h) = C w / h^D
   int tensile_power_integer_ = 0;                  // artificial_stress_power when a small integer, else 0
+  std::size_t volume_limited_ = 0;                 // volume_limited_count()
   std::size_t external_begin_ = 0, external_count_ = 0;  // coupling seam
   ExternalProvider external_provider_;
 };

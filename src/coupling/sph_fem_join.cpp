@@ -386,6 +386,11 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
   pairs_.clear();
+  // r-z: the ring radius of each point's element at the point (an image keeps its element's).
+  if (axisymmetric_) {
+    ring_.resize(points_.size());
+    for (std::size_t k = 0; k < points_.size(); ++k) ring_[k] = std::abs(interpolate(x_, points_[k])[0]);
+  }
   for (std::size_t i = 0; i < p.real; ++i) {
     for (const std::uint32_t j : particles.neighbours().neighbours(i)) {
       if (j < begin || j >= end) continue;
@@ -411,6 +416,9 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
           options_.volume_form ? p.stress_term[i] * (1.0 / eta_j) : p.stress_term[i] * (1.0 / eta_i);
       SymTensor other =
           options_.volume_form ? p.stress_term[j] * (1.0 / eta_i) : p.stress_term[j] * (1.0 / eta_j);
+      // The stress part weighted by the particle's ring radius r_i (r-z, below): m_i m_j / eta_j in
+      // the volume form (own: 2 pi r_i A_i A_j sigma_i), in the density form other (m_i A_j sigma_j / rho_j).
+      const SymTensor ring_part = options_.volume_form ? own : other;
       if (options_.artificial_stress) {
         const double dp = hij / options_.smoothing_factor;
         const double fr = kernel.value(r, hij) / kernel.value(dp, hij);
@@ -419,9 +427,27 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
       const double mm = p.mass[i] * p.mass[j];
       const Vec<D> force = (apply<D>(own + other, grad) - grad * pi_ij) * mm;  // on particle i
       const Point& pt = points_[j - begin];
-      pairs_.push_back({i, j, apply<D>(other, grad) * mm, grad * (mm * pi_ij), dv, force,
-                        p.velocity[j] - face_velocity(pt)});
       Vec<D> reaction = force * -1.0;
+      if (axisymmetric_) {
+        // The r-z ring term. With ring masses the pair force is 2 pi A_i A_j (r_i sigma_i + r_j sigma_j)
+        // . grad W (volume form; A the planar areas): summed over the particles i around the point j,
+        // the part weighted by the particle's ring radius r_i gives, besides the traction, the point's
+        // share f_j of the geometric source sigma_rr / r e_r of div(r sigma) / r, a radial force
+        // 2 pi A_j f_j sigma_rr that does not shrink with the spacing. A particle needs it (its hoop
+        // term -sigma_tt / r balances the source over its whole support); the element does not (its
+        // own nodal forces hold sigma_rr and sigma_tt exactly). Left on the interface nodes it pulled
+        // them towards the axis under compression with an acceleration ~ 1 / (r dx): the nodes next to
+        // the axis crossed it and their elements tangled (issue 8, docs/theory/coupling.md). So the
+        // face takes the radial pair force with that part weighted by the point's own ring radius,
+        // 2 pi r_j A_i A_j (sigma_i + sigma_j) . grad W: a uniform stress then passes no radial force.
+        // The axial component stays -F (axial momentum is conserved pair by pair); the radial one is
+        // no conserved quantity in r-z (hoop stresses exchange it), and its work is booked (settle()).
+        const double ratio = ring_[j - begin] / std::max(std::abs(p.position[i][0]), 1e-300);
+        reaction[0] += (1.0 - ratio) * apply<D>(ring_part, grad)[0] * mm;
+      }
+      const Vec<D> v_face = face_velocity(pt);
+      pairs_.push_back({i, j, apply<D>(other, grad) * mm, grad * (mm * pi_ij), dv, force, reaction,
+                        dot(force, p.velocity[j]) + dot(reaction, v_face)});
       for (int m = 0; m < pt.image_count; ++m) {
         const int axis = planes_[pt.planes[static_cast<std::size_t>(m)]].axis;
         reaction[axis] = -reaction[axis];
@@ -459,12 +485,13 @@ double SphFemJoin<D>::settle(const sph::SphSystem<D>& particles, double dt,
   for (const Pair& pair : pairs_) {
     const Vec<D> dv = (pair.dv_old + (p.velocity[pair.i] - p.velocity[pair.j])) * 0.5;
     // The element-side part of the conservative pair work: no internal energy books it. Nor the
-    // work of the whole pair force through the offset between the coupling point (v_j, which the
-    // sums see) and the face that takes the reaction (v_face, which the FEM moves).
+    // work of the pair force on the coupling point (v_j, which the sums see) and of its reaction on
+    // the face (v_face, which the FEM moves): F . v_j + R . v_face, with R = -F the offset work
+    // F . (v_j - v_face), in r-z also the work of the ring term taken off the radial reaction.
     join_work += dot(pair.other, dv) * dt;
-    const Vec<D> offset_new = p.velocity[pair.j] - face_velocity(points_[pair.j - begin]);
-    const Vec<D> offset = (pair.offset_old + offset_new) * 0.5;
-    face_offset_work_ += dot(pair.force, offset) * dt;
+    const double power_new =
+        dot(pair.force, p.velocity[pair.j]) + dot(pair.reaction, face_velocity(points_[pair.j - begin]));
+    face_offset_work_ += 0.5 * (pair.power_old + power_new) * dt;
     // Viscous heat: the particle took half (kick); the element behind the coupling point takes
     // the other half, so the viscosity converts kinetic into internal energy without loss.
     const double heat = 0.5 * dot(pair.viscous, dv) * dt;  // J, >= 0 for an approaching pair

@@ -78,7 +78,8 @@ class SphFemJoin {
   // The part of the last settle()'s join work done by the pair forces through
   // the offset between a coupling point (the element centre, whose velocity
   // the pair sums see) and the interface face that takes its reaction:
-  // sum F . (v_j - v_face) dt (J, centred velocities; docs/theory/coupling.md).
+  // sum (F . v_j + R . v_face) dt, R = -F but for the r-z ring term (J,
+  // centred velocities; docs/theory/coupling.md).
   double face_offset_work() const { return face_offset_work_; }
 
  private:
@@ -99,10 +100,12 @@ class SphFemJoin {
     Vec<D> other{};            // N, force on i from the element's stress
     Vec<D> viscous{};          // N, m_i m_j Pi_ij grad W (the viscous force on i is minus this)
     Vec<D> dv_old{};           // m/s, v_i - v_j at n-1/2
-    Vec<D> force{};            // N, the whole pair force on i (its reaction goes to the face)
-    Vec<D> offset_old{};       // m/s, v_j - v_face at n-1/2 (v_face mirrored as the reaction)
+    Vec<D> force{};            // N, the whole pair force on i
+    Vec<D> reaction{};         // N, what the face takes (-force, but for the r-z ring term; frame of j)
+    double power_old = 0.0;    // W, force . v_j + reaction . v_face at n-1/2 (v_face mirrored as j)
   };
   Vec<D> face_velocity(const Point& point) const;  // mean of the face nodes' v_, mirrored as the point
+  std::vector<double> ring_;                       // m, r-z: ring radius of each point's element there
   double face_offset_work_ = 0.0;
   std::vector<Pair> pairs_;
   static constexpr int face_nodes = D == 2 ? 2 : 4;

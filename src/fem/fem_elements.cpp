@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 
 #include "core/error.hpp"
 #include "fem/element_pack.hpp"
@@ -117,6 +118,29 @@ inline void hourglass_shapes(const PackedNodes<D>& x, const PackedNodes<D>& b,
       g[m][a] = v;
     }
   }
+}
+
+// Number of negative corner Jacobians of a quad (2-D; nodes counter-clockwise): at corner a,
+// (x_(a+1) - x_a) x (x_(a-1) - x_a). All four are positive for a convex quad, one is negative
+// for a concave one, two or more once its edges cross or it is inverted. 0 in 3-D (not checked).
+template <int D, typename Nodes>
+int corner_jacobians_negative(const Nodes& x, int lane = -1) {
+  int negative = 0;
+  if constexpr (D == 2) {
+    const auto at = [&](int i, int a) -> double {
+      if constexpr (std::is_same_v<Nodes, PackedNodes<D>>)
+        return x[i][a][lane];
+      else
+        return x[i][a];
+    };
+    for (int a = 0; a < 4; ++a) {
+      const int next = (a + 1) % 4, prev = (a + 3) % 4;
+      const double j = (at(0, next) - at(0, a)) * (at(1, prev) - at(1, a)) -
+                       (at(1, next) - at(1, a)) * (at(0, prev) - at(0, a));
+      if (j < 0.0) ++negative;
+    }
+  }
+  return negative;
 }
 
 }  // namespace
@@ -339,8 +363,9 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
   const std::size_t ne = size();
   const std::int64_t packs = static_cast<std::int64_t>((ne + W - 1) / W);
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
+  std::int64_t tangled = std::numeric_limits<std::int64_t>::max();
   double viscous_work = 0.0;
-#pragma omp parallel for schedule(static) reduction(min : bad) reduction(+ : viscous_work) if (static_cast<std::int64_t>(ne) > parallel_threshold)
+#pragma omp parallel for schedule(static) reduction(min : bad, tangled) reduction(+ : viscous_work) if (static_cast<std::int64_t>(ne) > parallel_threshold)
   for (std::int64_t k = 0; k < packs; ++k) {
     const std::size_t e0 = static_cast<std::size_t>(k) * W;
     const int count = static_cast<int>(std::min<std::size_t>(W, ne - e0));
@@ -397,6 +422,14 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
         bad = std::min(bad, static_cast<std::int64_t>(e));
         continue;
       }
+      if constexpr (D == 2) {
+        // The one-point area is the mean of the corner Jacobians: a quad whose edges cross (top
+        // nodes driven past the bottom ones on one side only) keeps a positive area while two
+        // corners have turned inside out, and its forces and density are then meaningless
+        // (issue 8: such an element set the time step for milliseconds unnoticed).
+        if (corner_jacobians_negative<D>(xe, l) >= 2)
+          tangled = std::min(tangled, static_cast<std::int64_t>(e));
+      }
       const SymTensor rate{L[0][0][l],
                            L[1][1][l],
                            L[2][2][l],
@@ -441,6 +474,12 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
   if (bad != std::numeric_limits<std::int64_t>::max()) {
     result.bad_element = bad;
     result.bad_volume = volume_of(x, static_cast<std::size_t>(bad));
+  }
+  if (tangled != std::numeric_limits<std::int64_t>::max()) {
+    result.tangled_element = tangled;
+    NodeValues<D> xe;
+    gather<D>(x, &connectivity[static_cast<std::size_t>(tangled) * nodes], xe);
+    result.tangled_corners = corner_jacobians_negative<D>(xe);
   }
   return result;
 }

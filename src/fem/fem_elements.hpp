@@ -28,6 +28,11 @@ struct ViscosityControl {
 struct KinematicsResult {
   std::int64_t bad_element = -1;  // 0-based; first element with non-positive or non-finite volume
   double bad_volume = 0.0;
+  // 2-D: first element (0-based) whose edges cross (a "bow-tie"): two or more of its corner
+  // Jacobians negative while its area is still positive; -1 if none. A concave quad (one
+  // negative corner) is not flagged: it still has a valid one-point integral.
+  std::int64_t tangled_element = -1;
+  int tangled_corners = 0;
   double viscous_work = 0.0;  // J, -sum q dV over this step
 };
 

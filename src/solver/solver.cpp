@@ -333,6 +333,22 @@ void Solver<D>::element_kinematics() {
     fail(NumericalError(
         EntityKind::element, r.bad_element + 1, "volume",
         fmt::format("volume {:.6g} m^3 is not positive (element inverted or collapsed)", r.bad_volume)));
+  if (r.tangled_element >= 0) {
+    // Not fatal: the buried-structure cases tangle an element now and then (issue 8,
+    // docs/reliability.md); a run must not carry one silently. Each newly tangled element is
+    // reported, at most 20 lines.
+    const std::int64_t id = r.tangled_element + 1;
+    if (first_tangled_cycle_ < 0) first_tangled_element_ = id, first_tangled_cycle_ = cycle_;
+    if (id != last_tangled_element_ && tangled_reports_ < 20) {
+      ++tangled_reports_;
+      fmt::print(stderr,
+                 "warning: element {} ({}) at cycle {}, time {:.6e} s: {} of its 4 corner Jacobians are "
+                 "negative: its edges cross (element tangled, a bow-tie; its area is still positive){}\n",
+                 id, describe(EntityKind::element, id), cycle_, time_, r.tangled_corners,
+                 tangled_reports_ == 20 ? " (no more such warnings)" : "");
+    }
+    last_tangled_element_ = id;
+  }
 }
 
 template <int D>

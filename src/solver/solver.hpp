@@ -45,6 +45,11 @@ class Solver {
   double time() const { return time_; }
   std::int64_t cycle() const { return cycle_; }
   double next_dt() const { return dt_next_; }
+  // 2-D: the first element found tangled (edges crossed, area still positive; fem_elements.hpp),
+  // 1-based, and the cycle it was found at; 0 and -1 while none was. Reported on stderr, not
+  // fatal (docs/reliability.md).
+  std::int64_t first_tangled_element() const { return first_tangled_element_; }
+  std::int64_t first_tangled_cycle() const { return first_tangled_cycle_; }
   const TimeStepLimit& time_step_limit() const { return limit_; }
   const EnergyBalance& energy() const { return energy_; }
   // Where the energy sits and what the boundary work is made of (energy.csv).
@@ -118,6 +123,9 @@ class Solver {
   double join_power_ = 0.0;              // W, pair work across the join that no internal energy books
   SlidingContact<D> contact_;            // particles against FEM faces (coupling/)
   double contact_power_ = 0.0;           // W, power of the contact forces
+  std::int64_t first_tangled_element_ = 0, first_tangled_cycle_ = -1;  // see first_tangled_element()
+  std::int64_t last_tangled_element_ = 0;
+  int tangled_reports_ = 0;  // warnings printed (at most 20)
   std::vector<MaterialPoints> batches_;  // one per Model::materials entry
   BoundaryConditions<D> boundaries_;
   TransmittingBoundary<D> transmitting_;  // Lysmer-Kuhlemeyer dashpots (coupling/)

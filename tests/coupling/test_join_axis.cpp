@@ -44,17 +44,7 @@ AxisCrossing axis_crossing(int columns, double shear_modulus) {
   const double cell = 5e-3, length = 1.2, width = columns * cell;
   BlockSpec block{"bar", 0, {0, 0, 0}, {width, length, 0}, {columns, static_cast<int>(length / cell), 1}};
   Model model = test::block_model(GeometryMode::axisymmetric, {block}, c);
-  Part zone;
-  zone.name = "zone";
-  zone.kind = PartKind::sph;
-  zone.material = 0;
-  model.parts.push_back(zone);
-  ParticleFillSpec fill;
-  fill.part = 1;
-  fill.spacing = cell;
-  fill.region.min = {0.0, 0.4, 0.0};
-  fill.region.max = {width, 0.8, 0.0};
-  make_joined_zone(model, fill);
+  make_joined_zone(model, test::zone_box(model, cell, {0.0, 0.4, 0.0}, {width, 0.8, 0.0}));
   model.sph.set_bool("viscosity_switch", true);  // as the plane-pulse tests of test_join.cpp
 
   const double c_p = c.p_wave_speed(), duration = 0.1 / c_p;

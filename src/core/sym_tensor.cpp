@@ -25,20 +25,4 @@ std::array<double, 3> principal_values(const SymTensor& a) {
   return {e1, e2, e3};
 }
 
-SymTensor jaumann_increment(const SymTensor& s, const Spin& w, double dt) {
-  // W s - s W with W antisymmetric: W = [[0, a, -c], [-a, 0, b], [c, -b, 0]],
-  // a = W_xy, b = W_yz, c = W_zx. Only the six independent entries, each the
-  // sum over k of W_ik s_kj - s_ik W_kj in the order k = 0, 1, 2 with the
-  // terms holding a zero of W dropped: the same roundings as the full 3x3
-  // product (the materials update calls this twice per point and cycle).
-  const double a = w.xy, b = w.yz, c = w.zx;
-  const double rxx = (a * s.xy - s.xy * -a) + (-c * s.zx - s.zx * c);
-  const double ryy = (-a * s.xy - s.xy * a) + (b * s.yz - s.yz * -b);
-  const double rzz = (c * s.zx - s.zx * -c) + (-b * s.yz - s.yz * b);
-  const double rxy = (a * s.yy - s.xx * a) + (-c * s.yz - s.zx * -b);
-  const double ryz = ((-a * s.zx - s.xy * -c) - s.yy * b) + b * s.zz;
-  const double rzx = (c * s.xx + (-b * s.xy - s.yz * -a)) - s.zz * c;
-  return {dt * rxx, dt * ryy, dt * rzz, dt * rxy, dt * ryz, dt * rzx};
-}
-
 }  // namespace camouflet

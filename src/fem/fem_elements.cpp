@@ -51,14 +51,16 @@ template <int D>
 using PackedNodes = Pack[D][Shape<D>::nodes];
 
 // Lane l <- element (first + l); lanes past `count` repeat the last element
-// (their results are never scattered).
-template <int D>
-inline void gather_pack(const double* field, const std::int64_t* conn, int count, PackedNodes<D>& out) {
+// (their results are never scattered). Gathers F node fields (positions,
+// velocities) at once, so that each node's numbers are fetched once for all.
+template <int D, int F>
+inline void gather_packs(const double* const (&field)[F], const std::int64_t* conn, int count,
+                         PackedNodes<D>* const (&out)[F]) {
   constexpr int N = Shape<D>::nodes;
 #if defined(__AVX512F__)
   // One 8-lane gather of node a's numbers (lane l: row l of conn), then one
-  // 8-lane gather per component straight into the pack: no lane-by-lane
-  // stores read back as a whole register.
+  // 8-lane gather per field and component straight into the pack: no
+  // lane-by-lane stores read back as a whole register.
   __m512i row = _mm512_set_epi64(7 * N, 6 * N, 5 * N, 4 * N, 3 * N, 2 * N, N, 0);
   if (count < pack_width) {
     alignas(64) std::int64_t rows[pack_width];
@@ -70,19 +72,39 @@ inline void gather_pack(const double* field, const std::int64_t* conn, int count
   for (int a = 0; a < N; ++a) {
     const __m512i node = _mm512_mask_i64gather_epi64(_mm512_setzero_si512(), 0xFF, row, conn + a, 8);
     const __m512i index = node * D;  // vector extension arithmetic
-    for (int i = 0; i < D; ++i)
-      out[i][a] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), 0xFF, index, field + i, 8);
+    for (int f = 0; f < F; ++f)
+      for (int i = 0; i < D; ++i)
+        (*out[f])[i][a] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), 0xFF, index, field[f] + i, 8);
   }
 #else
-  alignas(sizeof(Pack)) double lanes[D][N][pack_width];  // the layout of PackedNodes<D>
-  for (int l = 0; l < pack_width; ++l) {
-    const std::int64_t* c = conn + (l < count ? l : count - 1) * N;
-    for (int a = 0; a < N; ++a)
-      for (int i = 0; i < D; ++i) lanes[i][a][l] = field[c[a] * D + i];
+  for (int f = 0; f < F; ++f) {
+    alignas(sizeof(Pack)) double lanes[D][N][pack_width];  // the layout of PackedNodes<D>
+    for (int l = 0; l < pack_width; ++l) {
+      const std::int64_t* c = conn + (l < count ? l : count - 1) * N;
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < D; ++i) lanes[i][a][l] = field[f][c[a] * D + i];
+    }
+    static_assert(sizeof lanes == sizeof *out[f]);
+    std::memcpy(out[f], lanes, sizeof lanes);
   }
-  static_assert(sizeof lanes == sizeof out);
-  std::memcpy(&out, lanes, sizeof out);
 #endif
+}
+
+// Lanes e0 .. e0 + count - 1 of an element array as a pack; lanes past
+// `count` repeat the last element, as in gather_packs.
+inline Pack load_pack(const double* a, std::size_t e0, int count) {
+  Pack p;
+  if (count == pack_width) {
+    std::memcpy(&p, a + e0, sizeof p);
+  } else {
+    for (int l = 0; l < pack_width; ++l) p[l] = a[e0 + static_cast<std::size_t>(l < count ? l : count - 1)];
+  }
+  return p;
+}
+
+// All pack_width lanes of p into a[e0 ..].
+inline void store_pack(double* a, std::size_t e0, const Pack& p) {
+  std::memcpy(a + e0, &p, sizeof p);
 }
 
 template <int D>
@@ -210,8 +232,11 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
     if (!any) return 0.0;  // an eroded element carries no force (issue 6)
     const std::int64_t* conn = &connectivity[e0 * N];
-    PackedNodes<D> xe, b, fe;
-    gather_pack<D>(x, conn, count, xe);
+    PackedNodes<D> xe, ve, b, fe;
+    if (viscous_hg || stiff_hg)
+      gather_packs<D, 2>({x, v}, conn, count, {&xe, &ve});
+    else
+      gather_packs<D, 1>({x}, conn, count, {&xe});
     const Pack measure = Shape<D>::gradients(xe, b);
     Pack r_bar{};
     const Pack w = ring_weight_pack<D>(axi, xe, r_bar);
@@ -251,20 +276,15 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     double stored = 0.0;
     PackedNodes<D> fh;
     if (viscous_hg || stiff_hg) {
-      PackedNodes<D> ve;
-      gather_pack<D>(v, conn, count, ve);
       Pack g[Shape<D>::modes][N];
       hourglass_shapes<D>(xe, b, g);
       // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
       // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
       // l = V / largest face, from the last kinematics (same geometry).
-      Pack coef{};
-      for (int l = 0; l < W; ++l) {
-        const std::size_t e = e0 + static_cast<std::size_t>(l < count ? l : count - 1);
-        const double rho = density[e], c = wave_speed[e], le = length[e];
-        coef[l] = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? le : le * le)
-                             : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? 1.0 : le);
-      }
+      const Pack rho = load_pack(density.data(), e0, count), c = load_pack(wave_speed.data(), e0, count),
+                 le = load_pack(length.data(), e0, count);
+      Pack coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? le : le * le)
+                             : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? broadcast(1.0) : le);
       coef *= w;
       // All mode amplitudes first, then each force component as one sum over
       // the modes (in mode order, as before), held in registers rather than
@@ -374,8 +394,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
     if (!any) continue;
     const std::int64_t* conn = &connectivity[e0 * N];
     PackedNodes<D> xe, ve, xh, b;
-    gather_pack<D>(x, conn, count, xe);
-    gather_pack<D>(v, conn, count, ve);
+    gather_packs<D, 2>({x, v}, conn, count, {&xe, &ve});
     Pack speed2{};
     for (int a = 0; a < N; ++a) {
       Pack s2{};
@@ -411,14 +430,47 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
     const Pack measure = Shape<D>::measure(xe);
     Pack r_bar{};
     const Pack w = ring_weight_pack<D>(axi, xe, r_bar);
-    const Pack vol_pack = measure * w;
-    const Pack l_pack = Shape<D>::length(xe, measure);
+    const Pack vol = measure * w;
+    const Pack le = Shape<D>::length(xe, measure);
 
+    // Strain rate, spin, density and q of the whole pack, lane-parallel (the
+    // same operations per lane as the scalar forms they replace, so the same
+    // roundings); lanes whose volume is bad are computed but never written.
+    const Pack d_xy = 0.5 * (L[0][1] + L[1][0]), d_yz = 0.5 * (L[1][2] + L[2][1]),
+               d_zx = 0.5 * (L[2][0] + L[0][2]);
+    const Pack w_xy = 0.5 * (L[0][1] - L[1][0]), w_yz = 0.5 * (L[1][2] - L[2][1]),
+               w_zx = 0.5 * (L[2][0] - L[0][2]);
+    const Pack rho = load_pack(mass.data(), e0, count) / vol;
+    // Artificial bulk viscosity, compression only (von Neumann-Richtmyer
+    // quadratic + Landshoff linear): q = rho l (C_q^2 l |tr D| + C_l c) |tr D|.
+    const Pack div = L[0][0] + L[1][1] + L[2][2];
+    const Pack q_all = rho * le *
+                       (visc.quadratic * visc.quadratic * le * -div +
+                        visc.linear * load_pack(wave_speed.data(), e0, count)) *
+                       -div;
+    const Pack q = div < 0.0 ? q_all : Pack{};
+    // The force at t_n carried the previous q, the force at t_(n+1) carries
+    // this one; each acts over half of this step's volume change, so the
+    // energy equation is charged with their mean (time-centred q dV).
+    const Pack q_mean = 0.5 * (load_pack(viscosity.data(), e0, count) + q);
+    const Pack work = q_mean * (vol - load_pack(volume.data(), e0, count));
+    const Pack speed_pack = sqrt_of(speed2);
+
+    // Every lane present, valid and not eroded (the usual case): the element
+    // arrays are stored as whole packs after the lane loop.
+    bool whole = count == W;
+    for (int l = 0; l < count && whole; ++l)
+      whole = !eroded[e0 + static_cast<std::size_t>(l)] && vol[l] > 0.0 && std::isfinite(vol[l]);
+    int batch_index = -1;
+    double *pts_density = nullptr, *pts_density_previous = nullptr, *pts_viscosity = nullptr,
+           *pts_length = nullptr;
+    SymTensor* pts_strain_rate = nullptr;
+    Spin* pts_spin = nullptr;
     for (int l = 0; l < count; ++l) {
       const std::size_t e = e0 + static_cast<std::size_t>(l);
       if (eroded[e]) continue;
-      const double vol = vol_pack[l];
-      if (!(vol > 0.0) || !std::isfinite(vol)) {
+      const double vol_l = vol[l];
+      if (!(vol_l > 0.0) || !std::isfinite(vol_l)) {
         bad = std::min(bad, static_cast<std::int64_t>(e));
         continue;
       }
@@ -430,43 +482,42 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
         if (corner_jacobians_negative<D>(xe, l) >= 2)
           tangled = std::min(tangled, static_cast<std::int64_t>(e));
       }
-      const SymTensor rate{L[0][0][l],
-                           L[1][1][l],
-                           L[2][2][l],
-                           0.5 * (L[0][1][l] + L[1][0][l]),
-                           0.5 * (L[1][2][l] + L[2][1][l]),
-                           0.5 * (L[2][0][l] + L[0][2][l])};
-      const Spin spin{0.5 * (L[0][1][l] - L[1][0][l]), 0.5 * (L[1][2][l] - L[2][1][l]),
-                      0.5 * (L[2][0][l] - L[0][2][l])};
-      const double rho = mass[e] / vol;
-      const double le = l_pack[l];
+      viscous_work -= work[l];  // element order, as the scalar sum
 
-      // Artificial bulk viscosity, compression only (von Neumann-Richtmyer
-      // quadratic + Landshoff linear): q = rho l (C_q^2 l |tr D| + C_l c) |tr D|.
-      const double div = rate.trace();
-      const double q =
-          div < 0.0
-              ? rho * le * (visc.quadratic * visc.quadratic * le * -div + visc.linear * wave_speed[e]) * -div
-              : 0.0;
-      // The force at t_n carried the previous q, the force at t_(n+1) carries
-      // this one; each acts over half of this step's volume change, so the
-      // energy equation is charged with their mean (time-centred q dV).
-      const double q_mean = 0.5 * (viscosity[e] + q);
-      viscous_work -= q_mean * (vol - volume[e]);
-
-      MaterialPoints& pts = batches[static_cast<std::size_t>(material[e])];
+      // The material batch of this lane: its arrays looked up only when the
+      // material changes from the previous lane (usually once per pack).
+      const int m = material[e];
+      if (m != batch_index) {
+        batch_index = m;
+        MaterialPoints& pts = batches[static_cast<std::size_t>(m)];
+        pts_density = pts.density.data();
+        pts_density_previous = pts.density_previous.data();
+        pts_strain_rate = pts.strain_rate.data();
+        pts_spin = pts.spin.data();
+        pts_viscosity = pts.artificial_viscosity.data();
+        pts_length = pts.characteristic_length.data();
+      }
       const std::size_t p = point[e];
-      pts.density_previous[p] = pts.density[p];
-      pts.density[p] = rho;
-      pts.strain_rate[p] = rate;
-      pts.spin[p] = spin;
-      pts.artificial_viscosity[p] = q_mean;
-      pts.characteristic_length[p] = le;
-      volume[e] = vol;
-      density[e] = rho;
-      viscosity[e] = q;
-      length[e] = le;
-      speed[e] = std::sqrt(speed2[l]);
+      pts_density_previous[p] = pts_density[p];
+      pts_density[p] = rho[l];
+      pts_strain_rate[p] = SymTensor{L[0][0][l], L[1][1][l], L[2][2][l], d_xy[l], d_yz[l], d_zx[l]};
+      pts_spin[p] = Spin{w_xy[l], w_yz[l], w_zx[l]};
+      pts_viscosity[p] = q_mean[l];
+      pts_length[p] = le[l];
+      if (!whole) {
+        volume[e] = vol_l;
+        density[e] = rho[l];
+        viscosity[e] = q[l];
+        length[e] = le[l];
+        speed[e] = speed_pack[l];
+      }
+    }
+    if (whole) {
+      store_pack(volume.data(), e0, vol);
+      store_pack(density.data(), e0, rho);
+      store_pack(viscosity.data(), e0, q);
+      store_pack(length.data(), e0, le);
+      store_pack(speed.data(), e0, speed_pack);
     }
   }
   KinematicsResult result;

@@ -51,10 +51,4 @@ void MaterialPoints::resize(std::size_t n) {
   history.resize(n);
 }
 
-double MaterialPoints::wave_speed(std::size_t i) const {
-  const double c = sound_speed[i];
-  const double g = density[i] > 0.0 ? 4.0 * shear_modulus[i] / (3.0 * density[i]) : 0.0;
-  return std::sqrt(c * c + g);
-}
-
 }  // namespace camouflet

@@ -5,6 +5,7 @@
 // artificial viscosity and characteristic length; the material update writes
 // the rest. Model-specific per-point variables live in `history`, registered
 // by name by the EOS / strength / damage components (style.md #5).
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -65,5 +66,12 @@ struct MaterialPoints {
   // Longitudinal wave speed used by the time step and viscosity: sqrt(c^2 + 4G/(3 rho)).
   double wave_speed(std::size_t i) const;
 };
+
+// Inline: the solver gathers it for every element each cycle.
+inline double MaterialPoints::wave_speed(std::size_t i) const {
+  const double c = sound_speed[i];
+  const double g = density[i] > 0.0 ? 4.0 * shear_modulus[i] / (3.0 * density[i]) : 0.0;
+  return std::sqrt(c * c + g);
+}
 
 }  // namespace camouflet

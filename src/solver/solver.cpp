@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "fem/parallel.hpp"
+#include "solver/domain_box.hpp"
 
 namespace camouflet {
 
@@ -184,9 +185,10 @@ void Solver<D>::step() {
     add_bar_forces();        // embedded reinforcement bars onto their host nodes
     advance_velocities();    // a = F / m, v(n+1/2) by the central difference
     constrain_velocities();  // fixed, prescribed, symmetry, axis at t_(n+1/2)
-    account_energy();        // kinetic, internal, hourglass, boundary work at t_n
-    advance_positions();     // x(n+1) = x(n) + v(n+1/2) dt
-    check_nodes_and_particles();  // finite and inside the domain box (solver_checks.cpp)
+    // Energies at t_n, then x(n+1) = x(n) + v(n+1/2) dt, each node checked
+    // finite and inside the domain box: one pass over the nodes.
+    account_energy_and_advance_positions();
+    check_particles();  // the particles' half of check_nodes_and_particles (solver_checks.cpp)
     element_kinematics();    // V, rho at t_(n+1); D, W, q at mid-step (SPH kinematics beside it)
     update_materials();      // EOS + strength + damage, one call per material batch
     update_bars();           // embedded bars: uniaxial-stress material update
@@ -269,7 +271,7 @@ void Solver<D>::constrain_velocities() {
 }
 
 template <int D>
-void Solver<D>::account_energy() {
+void Solver<D>::account_energy_and_advance_positions() {
   // Kinetic energy at t_n in the form the central difference conserves:
   // (1/2) m (v_n^2 - a^2 dt-^2 / 4) with v_n = v(n-1/2) + a dt- / 2 and a the
   // applied (constrained) acceleration; for equal steps it is (1/2) m
@@ -277,11 +279,19 @@ void Solver<D>::account_energy() {
   // does not disturb it. The
   // viscous hourglass work from t_(n-1) to t_n is the trapezoid of its forces
   // against v(n-1/2), the same centring as the internal energy's.
+  // The same pass moves each node (x(n+1) = x(n) + v(n+1/2) dt) and checks it
+  // (check_nodes_and_particles' test): the node arrays are read once. The
+  // energy sums keep their grouping (one thread's share per contiguous block
+  // of nodes, the threshold of the former energy loop).
   const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
   const bool hourglass = !hourglass_force_.empty();
   const double dt_minus = dt_, dt_mean = 0.5 * (dt_ + dt_next_);
+  const double dt = dt_next_;
+  split_.sph_kinetic = particles_ ? particles_->centred_kinetic_energy() : 0.0;
+  if (particles_) particles_->drift(dt);
   double kinetic = 0.0, hourglass_power = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) if (nn > parallel_threshold_nodes)
+  std::int64_t bad = std::numeric_limits<std::int64_t>::max();
+#pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) reduction(min : bad) if (nn > parallel_threshold_nodes)
   for (std::int64_t n = 0; n < nn; ++n) {
     double vv = 0.0, fv = 0.0;
     for (int i = 0; i < D; ++i) {
@@ -293,8 +303,17 @@ void Solver<D>::account_energy() {
     }
     kinetic += 0.5 * node_mass_[static_cast<std::size_t>(n)] * vv;
     hourglass_power -= fv;
+    bool ok = true;
+    for (int i = 0; i < D; ++i) {
+      const std::size_t k = static_cast<std::size_t>(n * D + i);
+      const double dx = velocity_[k] * dt;
+      position_[k] += dx;
+      displacement_[k] += dx;
+      ok = ok && std::isfinite(velocity_[k]);
+    }
+    if (!ok || first_outside_domain<D>(model_.run, &position_[static_cast<std::size_t>(n * D)]) >= 0)
+      bad = std::min(bad, n);
   }
-  split_.sph_kinetic = particles_ ? particles_->centred_kinetic_energy() : 0.0;
   kinetic += split_.sph_kinetic;
   EnergyBalance& e = energy_;
   e.kinetic = kinetic;
@@ -304,22 +323,11 @@ void Solver<D>::account_energy() {
   const double total = e.kinetic + e.internal + e.hourglass + e.eroded;
   const double scale = std::max(e.initial_total + std::abs(e.boundary_work), std::abs(total));
   e.relative_error = scale > 0.0 ? std::abs(total - e.initial_total - e.boundary_work) / scale : 0.0;
-}
 
-template <int D>
-void Solver<D>::advance_positions() {
-  const double dt = dt_next_;
-  if (particles_) particles_->drift(dt);
-  const std::int64_t n = static_cast<std::int64_t>(position_.size());
-#pragma omp parallel for schedule(static) if (n > parallel_threshold_nodes)
-  for (std::int64_t k = 0; k < n; ++k) {
-    const double dx = velocity_[static_cast<std::size_t>(k)] * dt;
-    position_[static_cast<std::size_t>(k)] += dx;
-    displacement_[static_cast<std::size_t>(k)] += dx;
-  }
   dt_ = dt;
   time_ += dt;
   ++cycle_;
+  if (bad != std::numeric_limits<std::int64_t>::max()) fail_node(bad);
 }
 
 template <int D>
@@ -363,27 +371,38 @@ void Solver<D>::gather_element_state() {
   const std::int64_t ne = static_cast<std::int64_t>(elements_.size());
   double internal = 0.0;
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
-#pragma omp parallel for schedule(static) reduction(+ : internal) reduction(min : bad) if (ne > parallel_threshold)
-  for (std::int64_t k = 0; k < ne; ++k) {
-    const std::size_t e = static_cast<std::size_t>(k);
-    if (elements_.eroded[e]) {
-      elements_.stress[e] = SymTensor{};  // its energy went to EnergyBalance::eroded
-      continue;
+  // The same static split and per-thread sums as a parallel for; each thread
+  // keeps the batch of its previous element, so the batch is looked up only
+  // where the material changes.
+#pragma omp parallel reduction(+ : internal) reduction(min : bad) if (ne > parallel_threshold)
+  {
+    int batch_index = -1;
+    const MaterialPoints* pts = nullptr;
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < ne; ++k) {
+      const std::size_t e = static_cast<std::size_t>(k);
+      if (elements_.eroded[e]) {
+        elements_.stress[e] = SymTensor{};  // its energy went to EnergyBalance::eroded
+        continue;
+      }
+      if (elements_.material[e] != batch_index) {
+        batch_index = elements_.material[e];
+        pts = &batches_[static_cast<std::size_t>(batch_index)];
+      }
+      const std::size_t p = elements_.point[e];
+      const double pressure = pts->pressure[p];
+      SymTensor s = pts->deviator[p];
+      s.xx -= pressure;
+      s.yy -= pressure;
+      s.zz -= pressure;
+      elements_.stress[e] = s;
+      elements_.wave_speed[e] = pts->wave_speed(p);
+      const double energy = elements_.mass[e] * pts->specific_energy[p];
+      internal += energy;
+      if (!std::isfinite(s.xx + s.yy + s.zz + s.xy + s.yz + s.zx) || !std::isfinite(elements_.wave_speed[e]) ||
+          !std::isfinite(energy))
+        bad = std::min(bad, k);
     }
-    const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
-    const std::size_t p = elements_.point[e];
-    const double pressure = pts.pressure[p];
-    SymTensor s = pts.deviator[p];
-    s.xx -= pressure;
-    s.yy -= pressure;
-    s.zz -= pressure;
-    elements_.stress[e] = s;
-    elements_.wave_speed[e] = pts.wave_speed(p);
-    const double energy = elements_.mass[e] * pts.specific_energy[p];
-    internal += energy;
-    if (!std::isfinite(s.xx + s.yy + s.zz + s.xy + s.yz + s.zx) || !std::isfinite(elements_.wave_speed[e]) ||
-        !std::isfinite(energy))
-      bad = std::min(bad, k);
   }
   split_.sph_internal = particles_ ? particles_->internal_energy() : 0.0;
   split_.bar_internal = bars_.internal_energy();

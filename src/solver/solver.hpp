@@ -88,8 +88,7 @@ class Solver {
   void add_forces();
   void advance_velocities();
   void constrain_velocities();
-  void account_energy();
-  void advance_positions();
+  void account_energy_and_advance_positions();
   void element_kinematics();
   void update_materials();
   void gather_element_state();
@@ -105,6 +104,8 @@ class Solver {
   // domain box or with a non-finite position or velocity stops the run; an
   // entity is described by material and position in every failure message.
   void check_nodes_and_particles() const;
+  void check_particles() const;
+  [[noreturn]] void fail_node(std::int64_t n) const;  // 0-based; non-finite or outside the box
   std::string describe(EntityKind kind, std::int64_t id) const;
   std::vector<sph::MirrorPlane> particle_planes() const;
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/domain_box.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -53,42 +54,43 @@ std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
 }
 
 template <int D>
-void Solver<D>::check_nodes_and_particles() const {
+void Solver<D>::fail_node(std::int64_t bad) const {
   const RunControl& run = model_.run;
-  const auto outside = [&run](const double* x) {
-    for (int i = 0; i < D; ++i)
-      if (!(x[i] >= run.domain_min[static_cast<std::size_t>(i)] &&
-            x[i] <= run.domain_max[static_cast<std::size_t>(i)]))
-        return i;
-    return -1;
-  };
+  const auto n = static_cast<std::size_t>(bad);
+  const double* x = &position_[n * D];
+  const double* v = &velocity_[n * D];
+  bool finite = true;
+  for (int i = 0; i < D; ++i) finite = finite && std::isfinite(x[i]) && std::isfinite(v[i]);
+  if (!finite)
+    fail(NumericalError(EntityKind::node, bad + 1, "velocity",
+                        fmt::format("non-finite position or velocity (v = {})", position_text<D>(v))));
+  const int axis = first_outside_domain<D>(model_.run, x);
+  fail(NumericalError(EntityKind::node, bad + 1, "position",
+                      fmt::format("left the domain box: coordinate {} = {:.6g} m outside [{:.6g}, {:.6g}] m",
+                                  axis + 1, x[axis], run.domain_min[static_cast<std::size_t>(axis)],
+                                  run.domain_max[static_cast<std::size_t>(axis)])));
+}
+
+template <int D>
+void Solver<D>::check_nodes_and_particles() const {
   const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
 #pragma omp parallel for schedule(static) reduction(min : bad) if (nn > 20000)
   for (std::int64_t n = 0; n < nn; ++n) {
     const double* x = &position_[static_cast<std::size_t>(n * D)];
     const double* v = &velocity_[static_cast<std::size_t>(n * D)];
-    bool ok = outside(x) < 0;
+    bool ok = first_outside_domain<D>(model_.run, x) < 0;
     for (int i = 0; i < D; ++i) ok = ok && std::isfinite(v[i]);
     if (!ok) bad = std::min(bad, n);
   }
-  if (bad != std::numeric_limits<std::int64_t>::max()) {
-    const auto n = static_cast<std::size_t>(bad);
-    const double* x = &position_[n * D];
-    const double* v = &velocity_[n * D];
-    bool finite = true;
-    for (int i = 0; i < D; ++i) finite = finite && std::isfinite(x[i]) && std::isfinite(v[i]);
-    if (!finite)
-      fail(NumericalError(EntityKind::node, bad + 1, "velocity",
-                          fmt::format("non-finite position or velocity (v = {})", position_text<D>(v))));
-    const int axis = outside(x);
-    fail(
-        NumericalError(EntityKind::node, bad + 1, "position",
-                       fmt::format("left the domain box: coordinate {} = {:.6g} m outside [{:.6g}, {:.6g}] m",
-                                   axis + 1, x[axis], run.domain_min[static_cast<std::size_t>(axis)],
-                                   run.domain_max[static_cast<std::size_t>(axis)])));
-  }
+  if (bad != std::numeric_limits<std::int64_t>::max()) fail_node(bad);
+  check_particles();
+}
+
+template <int D>
+void Solver<D>::check_particles() const {
   if (!particles_) return;
+  const RunControl& run = model_.run;
   const auto& p = particles_->particles();
   for (std::size_t i = 0; i < p.real; ++i) {
     const double* x = p.position[i].c.data();
@@ -97,7 +99,7 @@ void Solver<D>::check_nodes_and_particles() const {
     if (!finite)
       fail(NumericalError(EntityKind::particle, static_cast<std::int64_t>(p.id[i]) + 1, "velocity",
                           "non-finite position or velocity"));
-    const int axis = outside(x);
+    const int axis = first_outside_domain<D>(model_.run, x);
     if (axis >= 0)
       fail(NumericalError(
           EntityKind::particle, static_cast<std::int64_t>(p.id[i]) + 1, "position",
@@ -111,5 +113,9 @@ template std::string Solver<2>::describe(EntityKind, std::int64_t) const;
 template std::string Solver<3>::describe(EntityKind, std::int64_t) const;
 template void Solver<2>::check_nodes_and_particles() const;
 template void Solver<3>::check_nodes_and_particles() const;
+template void Solver<2>::check_particles() const;
+template void Solver<3>::check_particles() const;
+template void Solver<2>::fail_node(std::int64_t) const;
+template void Solver<3>::fail_node(std::int64_t) const;
 
 }  // namespace camouflet

@@ -1,0 +1,20 @@
+#pragma once
+// The domain box test of the node and particle checks (issue 9), inline for
+// the node loops that apply it to every node each cycle (solver.cpp,
+// solver_checks.cpp).
+#include "model/model.hpp"
+
+namespace camouflet {
+
+// The first coordinate (0-based) of x outside [run.domain_min, run.domain_max]
+// (a NaN is outside), -1 if none.
+template <int D>
+inline int first_outside_domain(const RunControl& run, const double* x) {
+  for (int i = 0; i < D; ++i)
+    if (!(x[i] >= run.domain_min[static_cast<std::size_t>(i)] &&
+          x[i] <= run.domain_max[static_cast<std::size_t>(i)]))
+      return i;
+  return -1;
+}
+
+}  // namespace camouflet

@@ -315,14 +315,22 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
         }
     }
 
+    // Lane by lane, node by node: the node's D force values and, when asked
+    // for, its D hourglass values at one computed address (each array sees its
+    // additions in the same order as before).
+    const bool scatter_hourglass = fh_out && (viscous_hg || stiff_hg);
     for (int l = 0; l < count; ++l) {
       if (eroded[e0 + static_cast<std::size_t>(l)]) continue;
       const std::int64_t* c = conn + l * N;
-      for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) f_out[c[a] * D + i] += fe[i][a][l];
-      if (fh_out && (viscous_hg || stiff_hg))
-        for (int a = 0; a < N; ++a)
-          for (int i = 0; i < D; ++i) fh_out[c[a] * D + i] += fh[i][a][l];
+      for (int a = 0; a < N; ++a) {
+        const std::int64_t k = c[a] * D;
+        double* fk = f_out + k;
+        for (int i = 0; i < D; ++i) fk[i] += fe[i][a][l];
+        if (scatter_hourglass) {
+          double* hk = fh_out + k;
+          for (int i = 0; i < D; ++i) hk[i] += fh[i][a][l];
+        }
+      }
     }
     return stored;
   };

@@ -180,7 +180,9 @@ void Solver<D>::limit_next_step(double dt_max) {
 template <int D>
 void Solver<D>::step() {
   try {
-    check_nodes_and_particles();  // the state at t_n: a NaN is named before forces spread it
+    // The state at t_n: a NaN is named before forces spread it. FEM-only
+    // models skip the nodes that the previous step's node pass checked.
+    if (particles_ || !bars_.empty() || nodes_checked_cycle_ != cycle_) check_nodes_and_particles();
     add_forces();            // loads and element forces at t_n (SPH particle forces join here)
     add_bar_forces();        // embedded reinforcement bars onto their host nodes
     advance_velocities();    // a = F / m, v(n+1/2) by the central difference
@@ -328,6 +330,7 @@ void Solver<D>::account_energy_and_advance_positions() {
   time_ += dt;
   ++cycle_;
   if (bad != std::numeric_limits<std::int64_t>::max()) fail_node(bad);
+  nodes_checked_cycle_ = cycle_;
 }
 
 template <int D>

@@ -72,7 +72,10 @@ class Solver {
   std::size_t node_count() const { return node_mass_.size(); }
   const std::vector<double>& position() const { return position_; }
   const std::vector<double>& velocity() const { return velocity_; }
-  std::vector<double>& velocity() { return velocity_; }  // tests impose initial fields
+  std::vector<double>& velocity() {  // tests impose initial fields
+    nodes_checked_cycle_ = -1;           // so the next step checks them
+    return velocity_;
+  }
   const std::vector<double>& displacement() const { return displacement_; }
   const std::vector<double>& node_mass() const { return node_mass_; }
   const FemElements<D>& elements() const { return elements_; }
@@ -138,6 +141,12 @@ class Solver {
 
   double time_ = 0.0;
   std::int64_t cycle_ = 0;
+  // The cycle whose end state (x(n+1), v(n+1/2)) the node pass of
+  // account_energy_and_advance_positions found finite and inside the domain
+  // box; -1 once anything else may have written the nodes (the non-const
+  // velocity(), visit_state). A FEM-only step skips its start check of the
+  // nodes while this equals cycle_: nothing writes them in between.
+  std::int64_t nodes_checked_cycle_ = -1;
   double dt_ = 0.0;       // s, the step just taken (t_{n-1/2})
   double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
   TimeStepLimit limit_;

@@ -11,6 +11,7 @@ namespace camouflet {
 template <int D>
 void Solver<D>::visit_state(StateVisitor& v) {
   StateScope scope(v, "solver");
+  nodes_checked_cycle_ = -1;  // a restored state is checked again by the next step
   visit(v, "time", time_);
   visit(v, "cycle", cycle_);
   visit(v, "dt", dt_);

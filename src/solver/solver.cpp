@@ -211,14 +211,17 @@ void Solver<D>::fail(NumericalError error) const {
 
 template <int D>
 void Solver<D>::add_forces() {
-  std::fill(force_.begin(), force_.end(), 0.0);
+  // The node passes of the previous step zeroed both arrays as they read
+  // them for the last time (node_forces_zeroed_); otherwise zero them here.
+  if (!node_forces_zeroed_) std::fill(force_.begin(), force_.end(), 0.0);
   boundaries_.add_loads(position_.data(), time_, force_.data());
   double* f_hourglass = nullptr;
   if (!hourglass_force_.empty()) {
     hourglass_force_.swap(hourglass_force_previous_);
-    std::fill(hourglass_force_.begin(), hourglass_force_.end(), 0.0);
+    if (!node_forces_zeroed_) std::fill(hourglass_force_.begin(), hourglass_force_.end(), 0.0);
     f_hourglass = hourglass_force_.data();
   }
+  node_forces_zeroed_ = false;
   hourglass_stored_ = elements_.add_internal_forces(position_.data(), velocity_.data(), force_.data(),
                                                     f_hourglass, hourglass_, dt_);
   if (particles_) particles_->compute_accelerations();  // SPH sums at t_n
@@ -239,6 +242,7 @@ void Solver<D>::advance_velocities() {
     for (int i = 0; i < D; ++i) {
       const std::size_t k = static_cast<std::size_t>(n * D + i);
       const double a = force_[k] * inv_m;
+      force_[k] = 0.0;  // its last use: zeroed for the next add_forces
       acceleration_[k] = a;
       velocity_old_[k] = velocity_[k];
       velocity_[k] += a * dt_mean;
@@ -301,7 +305,10 @@ void Solver<D>::account_energy_and_advance_positions() {
       const double a = (velocity_[k] - velocity_old_[k]) / dt_mean;
       const double v_n = velocity_old_[k] + 0.5 * a * dt_minus;
       vv += v_n * v_n - 0.25 * a * a * dt_minus * dt_minus;
-      if (hourglass) fv += 0.5 * (hourglass_force_[k] + hourglass_force_previous_[k]) * velocity_old_[k];
+      if (hourglass) {
+        fv += 0.5 * (hourglass_force_[k] + hourglass_force_previous_[k]) * velocity_old_[k];
+        hourglass_force_previous_[k] = 0.0;  // its last use: the next add_forces fills it
+      }
     }
     kinetic += 0.5 * node_mass_[static_cast<std::size_t>(n)] * vv;
     hourglass_power -= fv;
@@ -331,6 +338,7 @@ void Solver<D>::account_energy_and_advance_positions() {
   ++cycle_;
   if (bad != std::numeric_limits<std::int64_t>::max()) fail_node(bad);
   nodes_checked_cycle_ = cycle_;
+  node_forces_zeroed_ = true;  // force_ in advance_velocities, hourglass_force_previous_ above
 }
 
 template <int D>

@@ -147,6 +147,10 @@ class Solver {
   // velocity(), visit_state). A FEM-only step skips its start check of the
   // nodes while this equals cycle_: nothing writes them in between.
   std::int64_t nodes_checked_cycle_ = -1;
+  // force_ and hourglass_force_previous_ hold zeros: the node passes zero them
+  // at their last read in a step, so add_forces need not fill them again
+  // (false after a restore: a checkpoint holds the forces of its last step).
+  bool node_forces_zeroed_ = false;
   double dt_ = 0.0;       // s, the step just taken (t_{n-1/2})
   double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
   TimeStepLimit limit_;

@@ -70,7 +70,7 @@ struct Spin {
 // Jaumann (co-rotational) increment of a symmetric tensor over dt:
 // s_dot = W s - s W, as used by the objective stress rate (issue 2).
 // Inline: the material update calls it for every point and cycle (twice in
-// the soil); as an out-of-line call it cost ~35 ns a point (docs/performance.md).
+// the soil), and the call cost more than its 30 flops (docs/performance.md).
 inline SymTensor jaumann_increment(const SymTensor& s, const Spin& w, double dt) {
   // W s - s W with W antisymmetric: W = [[0, a, -c], [-a, 0, b], [c, -b, 0]],
   // a = W_xy, b = W_yz, c = W_zx. Only the six independent entries, each the

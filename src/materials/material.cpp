@@ -64,7 +64,8 @@ void Material::update(MaterialPoints& pts, const MaterialContext& ctx) const {
 
   // Corrector: trapezoidal p dv with the predicted pressure; the deviatoric
   // work is completed after the strength update below. Half the predictor's
-  // work is 0.5 dt s:D / rho_mid to the last bit (halving is exact).
+  // work is 0.5 dt s:D / rho_mid to the last bit (halving is exact short of
+  // subnormal numbers).
 #pragma omp parallel for schedule(static) if (n > 2048)  // small batches: one thread
   for (std::size_t i = 0; i < n; ++i) {
     const double p_avg = 0.5 * (pts.pressure_start[i] + pts.pressure[i]);

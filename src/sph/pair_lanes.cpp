@@ -64,7 +64,7 @@ void SphSystem<D>::pack_pair_points() {
 }
 
 template <int D>
-void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
+void SphSystem<D>::force_row_lanes(std::size_t i, RowWindow<ForceSum> own) {
   using P = PairPoint<D>;
   const std::size_t n = p_.real;
   const PairPoint<D>* points = pair_points_.data();
@@ -179,7 +179,7 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
 }
 
 template <int D>
-void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
+void SphSystem<D>::kinematics_row_lanes(std::size_t i, RowWindow<KinematicSum> own) {
   using P = PairPoint<D>;
   const std::size_t n = p_.real;
   const PairPoint<D>* points = pair_points_.data();
@@ -235,9 +235,9 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
 
 template void SphSystem<2>::pack_pair_points();
 template void SphSystem<3>::pack_pair_points();
-template void SphSystem<2>::force_row_lanes(std::size_t, ForceSum*);
-template void SphSystem<3>::force_row_lanes(std::size_t, ForceSum*);
-template void SphSystem<2>::kinematics_row_lanes(std::size_t, KinematicSum*);
-template void SphSystem<3>::kinematics_row_lanes(std::size_t, KinematicSum*);
+template void SphSystem<2>::force_row_lanes(std::size_t, RowWindow<ForceSum>);
+template void SphSystem<3>::force_row_lanes(std::size_t, RowWindow<ForceSum>);
+template void SphSystem<2>::kinematics_row_lanes(std::size_t, RowWindow<KinematicSum>);
+template void SphSystem<3>::kinematics_row_lanes(std::size_t, RowWindow<KinematicSum>);
 
 }  // namespace camouflet::sph

@@ -182,6 +182,28 @@ void SphSystem<D>::refresh_active_pairs() {
 }
 
 template <int D>
+void SphSystem<D>::prepare_row_blocks() {
+  // Blocks of about equal cost for the team the pair loops will run on: the j > i entries plus a
+  // per-row share for the row's own work (its packed record, the finishing of its sums).
+  const std::size_t blocks = static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
+  if (row_blocks_extraction_ == active_extractions_ &&
+      row_blocks_.count() == std::min(blocks, std::max<std::size_t>(p_.real, 1)))
+    return;
+  const std::size_t n = p_.real;
+  constexpr std::size_t row_cost = 4;  // pair entries
+  // One past the largest particle among row i's j > i entries (ghosts and coupling points, j >= n,
+  // sort after the particles in the list and have no sums).
+  auto reach = [&](std::size_t i) {
+    const auto list = active_upper_neighbours(i);
+    std::size_t e = list.size();
+    while (e > 0 && list[e - 1] >= n) --e;
+    return e > 0 ? std::max<std::size_t>(i + 1, list[e - 1] + 1) : i + 1;
+  };
+  row_blocks_.build(blocks, n, upper_index_.data(), row_cost, reach);
+  row_blocks_extraction_ = active_extractions_;
+}
+
+template <int D>
 void SphSystem<D>::force_pass(bool write_rates) {
   // The momentum sum of sph_system.hpp, pair-symmetric: each pair of
   // particles is evaluated once (j > i) and gives m_j F_ij to i and -m_i F_ij
@@ -197,7 +219,10 @@ void SphSystem<D>::force_pass(bool write_rates) {
   refresh_active_pairs();
   prepare_point_factors();
   pair_dissipation_.resize(upper_index_[n]);
-  force_sums_.prepare(n);
+  prepare_row_blocks();
+  const RowBlocks& blocks = row_blocks_;
+  const std::size_t n_blocks = blocks.count();
+  force_sums_.prepare(blocks);
   const bool tensile = options_.artificial_stress;
   const bool volume_form = options_.volume_form;
   const bool switched = options_.viscosity_switch;
@@ -211,83 +236,89 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
 #pragma omp parallel
   {
-    ForceSum* own = force_sums_.own_zeroed();
-#pragma omp for schedule(static, 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
-        force_row_lanes(i, own);
-        continue;
-      }
-      Vec<D> acc{};
-      double mu_max = 0.0;
-      int count = 0;
-      const std::size_t base = upper_index_[i];
-      const auto list = active_upper_neighbours(i);
-      for (std::size_t e = 0; e < list.size(); ++e) {
-        const std::uint32_t j = list[e];
-        const Vec<D> dx = x[i] - x[j];
-        const double r2 = dot(dx, dx);
-        const double hij = pair_smoothing_length(h[i], h[j]);
-        if (r2 >= support_factor * support_factor * hij * hij) {
-          pair_dissipation_[base + e] = Vec<D>{};
+    // One block per thread (schedule(static, 1) with as many blocks as threads); the same thread
+    // adds up the block's rows after the barrier, while its copy is still in its cache.
+#pragma omp for schedule(static, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k) {
+      const RowWindow<ForceSum> own = force_sums_.zeroed(blocks, k);
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
+          force_row_lanes(i, own);
           continue;
         }
-        const double inv_h = 1.0 / hij;
-        const double r = std::sqrt(r2);
-        const auto w = kernel_.pair_terms(r, inv_h);
-        const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
-        const Vec<D> dv = v[i] - v[j];
-        const double vr = dot(dv, dx);
-        Vec<D> dissipation{};
-        double mu = 0.0;
-        if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
-          mu = hij * vr / (r2 + 0.01 * hij * hij);
-          const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-          const PairViscosity q =
-              switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
-          const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
-          mu_max = std::max(mu_max, -mu);
-          dissipation = grad * pi_ij;
+        Vec<D> acc{};
+        double mu_max = 0.0;
+        int count = 0;
+        const std::size_t base = upper_index_[i];
+        const auto list = active_upper_neighbours(i);
+        for (std::size_t e = 0; e < list.size(); ++e) {
+          const std::uint32_t j = list[e];
+          const Vec<D> dx = x[i] - x[j];
+          const double r2 = dot(dx, dx);
+          const double hij = pair_smoothing_length(h[i], h[j]);
+          if (r2 >= support_factor * support_factor * hij * hij) {
+            pair_dissipation_[base + e] = Vec<D>{};
+            continue;
+          }
+          const double inv_h = 1.0 / hij;
+          const double r = std::sqrt(r2);
+          const auto w = kernel_.pair_terms(r, inv_h);
+          const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
+          const Vec<D> dv = v[i] - v[j];
+          const double vr = dot(dv, dx);
+          Vec<D> dissipation{};
+          double mu = 0.0;
+          if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
+            mu = hij * vr / (r2 + 0.01 * hij * hij);
+            const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+            const PairViscosity q =
+                switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
+            const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+            mu_max = std::max(mu_max, -mu);
+            dissipation = grad * pi_ij;
+          }
+          if (tensile && (has_tensile_[i] | has_tensile_[j])) {
+            const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
+            dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
+          }
+          pair_dissipation_[base + e] = dissipation;
+          // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j /
+          // eta_j).
+          const SymTensor pair = volume_form
+                                     ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
+                                     : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
+          const Vec<D> force = apply<D>(pair, grad) - dissipation;
+          acc += force * m[j];
+          ++count;
+          if (j < n) {
+            ForceSum& other = own[j];
+            other.acceleration -= force * m[i];
+            other.compression_rate = std::max(other.compression_rate, -mu);
+            ++other.count;
+          }
         }
-        if (tensile && (has_tensile_[i] | has_tensile_[j])) {
-          const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
-          dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
-        }
-        pair_dissipation_[base + e] = dissipation;
-        // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
-        const SymTensor pair = volume_form ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
-                                           : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
-        const Vec<D> force = apply<D>(pair, grad) - dissipation;
-        acc += force * m[j];
-        ++count;
-        if (j < n) {
-          ForceSum& other = own[j];
-          other.acceleration -= force * m[i];
-          other.compression_rate = std::max(other.compression_rate, -mu);
-          ++other.count;
-        }
+        ForceSum& mine = own[i];
+        mine.acceleration += acc;
+        mine.compression_rate = std::max(mine.compression_rate, mu_max);
+        mine.count += count;
       }
-      ForceSum& mine = own[i];
-      mine.acceleration += acc;
-      mine.compression_rate = std::max(mine.compression_rate, mu_max);
-      mine.count += count;
     }
     if (write_rates) {
-      const int team = omp_get_num_threads();
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
-        ForceSum total = force_sums_.at(0, i);
-        for (int t = 1; t < team; ++t) {
-          const ForceSum& part = force_sums_.at(t, i);
-          total.acceleration += part.acceleration;
-          total.compression_rate = std::max(total.compression_rate, part.compression_rate);
-          total.count += part.count;
+      auto add = [](ForceSum& total, const ForceSum& part) {
+        total.acceleration += part.acceleration;
+        total.compression_rate = std::max(total.compression_rate, part.compression_rate);
+        total.count += part.count;
+      };
+#pragma omp for schedule(static, 1)
+      for (std::size_t k = 0; k < n_blocks; ++k) {
+        for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+          ForceSum total = force_sums_.total(blocks, k, i, add);
+          if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
+            total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
+          p_.acceleration[i] = total.acceleration;
+          p_.compression_rate[i] = total.compression_rate;
+          p_.neighbour_count[i] = total.count;
         }
-        if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
-          total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
-        p_.acceleration[i] = total.acceleration;
-        p_.compression_rate[i] = total.compression_rate;
-        p_.neighbour_count[i] = total.count;
       }
     }
   }
@@ -330,31 +361,34 @@ void SphSystem<D>::kick(double dt) {
   const auto& v_new = p_.velocity;
   const auto& m = p_.mass;
   const auto& d = pair_dissipation_;
-  heat_sums_.prepare(n);
+  // The blocks of the force pass that stored d (the same extraction; thread_sums.hpp).
+  const RowBlocks& blocks = row_blocks_;
+  const std::size_t n_blocks = blocks.count();
+  heat_sums_.prepare(blocks);
 #pragma omp parallel
   {
-    double* own = heat_sums_.own_zeroed();
-#pragma omp for schedule(static, 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec<D> sum_i = v_old[i] + v_new[i];
-      double heat = 0.0;
-      const std::size_t base = upper_index_[i];
-      const auto list = active_upper_neighbours(i);
-      for (std::size_t e = 0; e < list.size(); ++e) {
-        const std::uint32_t j = list[e];
-        const double work = dot(d[base + e], sum_i - (v_old[j] + v_new[j]));  // 2 d_ij . vbar_ij
-        heat += work * m[j];
-        if (j < n) own[j] += work * m[i];
+#pragma omp for schedule(static, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k) {
+      const RowWindow<double> own = heat_sums_.zeroed(blocks, k);
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        const Vec<D> sum_i = v_old[i] + v_new[i];
+        double heat = 0.0;
+        const std::size_t base = upper_index_[i];
+        const auto list = active_upper_neighbours(i);
+        for (std::size_t e = 0; e < list.size(); ++e) {
+          const std::uint32_t j = list[e];
+          const double work = dot(d[base + e], sum_i - (v_old[j] + v_new[j]));  // 2 d_ij . vbar_ij
+          heat += work * m[j];
+          if (j < n) own[j] += work * m[i];
+        }
+        own[i] += heat;
       }
-      own[i] += heat;
     }
-    const int team = omp_get_num_threads();
-#pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      double heat = heat_sums_.at(0, i);
-      for (int t = 1; t < team; ++t) heat += heat_sums_.at(t, i);
-      p_.heating[i] += 0.25 * heat * dt;
-    }
+    auto add = [](double& total, double part) { total += part; };
+#pragma omp for schedule(static, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k)
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i)
+        p_.heating[i] += 0.25 * heat_sums_.total(blocks, k, i, add) * dt;
   }
   if (options_.conductivity > 0.0) conduct_heat(dt);
 }
@@ -523,102 +557,107 @@ void SphSystem<D>::update_state(double dt, double time) {
   // Pair-symmetric like force_pass(): v_ji (x) grad_j W_ji = v_ij (x) grad_i W_ij, so each
   // pair of particles is evaluated once and adds to both with its own weight
   // (volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j).
-  kinematic_sums_.prepare(n);
+  prepare_row_blocks();
+  const RowBlocks& blocks = row_blocks_;
+  const std::size_t n_blocks = blocks.count();
+  kinematic_sums_.prepare(blocks);
 #pragma omp parallel
   {
-    KinematicSum* own = kinematic_sums_.own_zeroed();
-#pragma omp for schedule(static, 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
-        kinematics_row_lanes(i, own);
-        continue;
-      }
-      KinematicSum mine;
-      for (const std::uint32_t j : active_upper_neighbours(i)) {
-        const Vec<D> dx = x[i] - x[j];
-        const double r2 = dot(dx, dx);
-        const double hij = pair_smoothing_length(h[i], h[j]);
-        if (r2 >= support_factor * support_factor * hij * hij) continue;
-        const Vec<D> grad = dx * kernel_.pair_terms(std::sqrt(r2), 1.0 / hij).gradient_factor;
-        const Vec<D> dv = v[i] - v[j];
-        const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
-        const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
-        const bool both = j < n;
-        if (corrected) {
-          // Continuity with the pair gradient of the momentum sum (conjugate);
-          // L with each particle's own correction, exact for linear fields.
-          const double rate = dot(dv, pair_gradient(i, j, grad));
-          const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
-          mine.rate += weight_i * rate;
-          for (int a = 0; a < D; ++a)
-            for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
-          if (both) {
-            const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
-            own[j].rate += weight_j * rate;
+    // One block per thread, as in force_pass().
+#pragma omp for schedule(static, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k) {
+      const RowWindow<KinematicSum> own = kinematic_sums_.zeroed(blocks, k);
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
+          kinematics_row_lanes(i, own);
+          continue;
+        }
+        KinematicSum mine;
+        for (const std::uint32_t j : active_upper_neighbours(i)) {
+          const Vec<D> dx = x[i] - x[j];
+          const double r2 = dot(dx, dx);
+          const double hij = pair_smoothing_length(h[i], h[j]);
+          if (r2 >= support_factor * support_factor * hij * hij) continue;
+          const Vec<D> grad = dx * kernel_.pair_terms(std::sqrt(r2), 1.0 / hij).gradient_factor;
+          const Vec<D> dv = v[i] - v[j];
+          const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
+          const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
+          const bool both = j < n;
+          if (corrected) {
+            // Continuity with the pair gradient of the momentum sum (conjugate);
+            // L with each particle's own correction, exact for linear fields.
+            const double rate = dot(dv, pair_gradient(i, j, grad));
+            const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
+            mine.rate += weight_i * rate;
             for (int a = 0; a < D; ++a)
-              for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
-          }
-        } else {
-          const double rate = dot(dv, grad);
-          mine.rate += weight_i * rate;
-          for (int a = 0; a < D; ++a)
-            for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * grad[b];
-          if (both) {
-            own[j].rate += weight_j * rate;
+              for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
+            if (both) {
+              const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
+              own[j].rate += weight_j * rate;
+              for (int a = 0; a < D; ++a)
+                for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
+            }
+          } else {
+            const double rate = dot(dv, grad);
+            mine.rate += weight_i * rate;
             for (int a = 0; a < D; ++a)
-              for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * grad[b];
+              for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * grad[b];
+            if (both) {
+              own[j].rate += weight_j * rate;
+              for (int a = 0; a < D; ++a)
+                for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * grad[b];
+            }
           }
         }
-      }
-      own[i].rate += mine.rate;
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
-    }
-    const int team = omp_get_num_threads();
-#pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      KinematicSum total = kinematic_sums_.at(0, i);
-      for (int t = 1; t < team; ++t) {
-        const KinematicSum& part = kinematic_sums_.at(t, i);
-        total.rate += part.rate;
+        own[i].rate += mine.rate;
         for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
+          for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
       }
-      const double eta_rate = total.rate;
-      double L[3][3] = {};
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
-      // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
-      // matches the momentum sum (energy-consistent).
-      if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
-      SymTensor d{L[0][0],
-                  L[1][1],
-                  L[2][2],
-                  0.5 * (L[0][1] + L[1][0]),
-                  0.5 * (L[1][2] + L[2][1]),
-                  0.5 * (L[2][0] + L[0][2])};
-      p_.strain_rate[i] = d;
-      if (options_.viscosity_switch) {
-        // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
-        // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
-        const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
-        const double source = std::max(-d.trace(), 0.0);
-        const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
-        const double b = 1.0 / tau + source;
-        const double target = a / b;
-        p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
-      }
-      p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
-      // Continuity, integrated as d ln(eta) so that eta stays positive.
-      eta_new[i] = eta[i] * std::exp(dt * eta_rate);
-      double hi = h[i];
-      if (options_.variable_smoothing_length) {
-        const double h0 = p_.reference_smoothing_length[i];
-        hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
-        hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
-      }
-      h_new[i] = hi;
     }
+    auto add = [](KinematicSum& total, const KinematicSum& part) {
+      total.rate += part.rate;
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
+    };
+#pragma omp for schedule(static, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k)
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        const KinematicSum total = kinematic_sums_.total(blocks, k, i, add);
+        const double eta_rate = total.rate;
+        double L[3][3] = {};
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
+        // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
+        // matches the momentum sum (energy-consistent).
+        if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
+        SymTensor d{L[0][0],
+                    L[1][1],
+                    L[2][2],
+                    0.5 * (L[0][1] + L[1][0]),
+                    0.5 * (L[1][2] + L[2][1]),
+                    0.5 * (L[2][0] + L[0][2])};
+        p_.strain_rate[i] = d;
+        if (options_.viscosity_switch) {
+          // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
+          // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
+          const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
+          const double source = std::max(-d.trace(), 0.0);
+          const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
+          const double b = 1.0 / tau + source;
+          const double target = a / b;
+          p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
+        }
+        p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
+        // Continuity, integrated as d ln(eta) so that eta stays positive.
+        eta_new[i] = eta[i] * std::exp(dt * eta_rate);
+        double hi = h[i];
+        if (options_.variable_smoothing_length) {
+          const double h0 = p_.reference_smoothing_length[i];
+          hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
+          hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
+        }
+        h_new[i] = hi;
+      }
   }
 
   std::size_t limited = 0;
@@ -676,6 +715,8 @@ template void SphSystem<2>::compute_correction();
 template void SphSystem<3>::compute_correction();
 template void SphSystem<2>::refresh_active_pairs();
 template void SphSystem<3>::refresh_active_pairs();
+template void SphSystem<2>::prepare_row_blocks();
+template void SphSystem<3>::prepare_row_blocks();
 template void SphSystem<2>::force_pass(bool);
 template void SphSystem<3>::force_pass(bool);
 template void SphSystem<2>::prepare_point_factors();

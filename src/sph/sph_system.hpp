@@ -267,7 +267,11 @@ class SphSystem {
   // grad W, the viscous and artificial-stress part of the pair force of the last force_pass() per unit mass
   // product, whose work kick() books as heat without evaluating the kernel again.
   std::vector<Vec<D>> pair_dissipation_;
-  // Per-thread sums of the pair-symmetric loops (thread_sums.hpp).
+  // Row blocks of the pair-symmetric loops and their copies of the sums
+  // (thread_sums.hpp), rebuilt with each extraction of the active lists.
+  RowBlocks row_blocks_;
+  std::int64_t row_blocks_extraction_ = -1;  // extraction the blocks belong to
+  void prepare_row_blocks();
   struct ForceSum {
     Vec<D> acceleration{};
     double compression_rate = 0.0;
@@ -277,16 +281,16 @@ class SphSystem {
     double rate = 0.0;    // sum_j weight_j v_ij . grad W
     double L[D][D] = {};  // -sum_j weight_j v_ij (x) grad W
   };
-  ThreadSums<ForceSum> force_sums_;
-  ThreadSums<KinematicSum> kinematic_sums_;
+  BlockSums<ForceSum> force_sums_;
+  BlockSums<KinematicSum> kinematic_sums_;
   // The pair loops on SIMD lanes (pair_lanes.cpp; without the kernel
   // correction): row i of force_pass() and of update_state()'s kinematics,
-  // adding to own (the calling thread's sums), from the packed records.
+  // adding to own (the copy of the sums of the row's block), from the packed records.
   std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by prepare_point_factors()
   void pack_pair_points();
-  void force_row_lanes(std::size_t i, ForceSum* own);
-  void kinematics_row_lanes(std::size_t i, KinematicSum* own);
-  ThreadSums<double> heat_sums_;
+  void force_row_lanes(std::size_t i, RowWindow<ForceSum> own);
+  void kinematics_row_lanes(std::size_t i, RowWindow<KinematicSum> own);
+  BlockSums<double> heat_sums_;
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far
   std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to

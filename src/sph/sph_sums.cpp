@@ -222,7 +222,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
   const std::size_t n_blocks = blocks.count();
-  force_sums_.prepare(blocks);
+  force_sums_.prepare(blocks, n);
   const bool tensile = options_.artificial_stress;
   const bool volume_form = options_.volume_form;
   const bool switched = options_.viscosity_switch;
@@ -240,7 +240,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
     // adds up the block's rows after the barrier, while its copy is still in its cache.
 #pragma omp for schedule(static, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
-      const RowWindow<ForceSum> own = force_sums_.zeroed(blocks, k);
+      ForceSum* const own = force_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
         if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
           force_row_lanes(i, own);
@@ -364,12 +364,12 @@ void SphSystem<D>::kick(double dt) {
   // The blocks of the force pass that stored d (the same extraction; thread_sums.hpp).
   const RowBlocks& blocks = row_blocks_;
   const std::size_t n_blocks = blocks.count();
-  heat_sums_.prepare(blocks);
+  heat_sums_.prepare(blocks, n);
 #pragma omp parallel
   {
 #pragma omp for schedule(static, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
-      const RowWindow<double> own = heat_sums_.zeroed(blocks, k);
+      double* const own = heat_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
         const Vec<D> sum_i = v_old[i] + v_new[i];
         double heat = 0.0;
@@ -560,13 +560,13 @@ void SphSystem<D>::update_state(double dt, double time) {
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
   const std::size_t n_blocks = blocks.count();
-  kinematic_sums_.prepare(blocks);
+  kinematic_sums_.prepare(blocks, n);
 #pragma omp parallel
   {
     // One block per thread, as in force_pass().
 #pragma omp for schedule(static, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
-      const RowWindow<KinematicSum> own = kinematic_sums_.zeroed(blocks, k);
+      KinematicSum* const own = kinematic_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
         if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
           kinematics_row_lanes(i, own);

@@ -288,8 +288,8 @@ class SphSystem {
   // adding to own (the copy of the sums of the row's block), from the packed records.
   std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by prepare_point_factors()
   void pack_pair_points();
-  void force_row_lanes(std::size_t i, RowWindow<ForceSum> own);
-  void kinematics_row_lanes(std::size_t i, RowWindow<KinematicSum> own);
+  void force_row_lanes(std::size_t i, ForceSum* own);
+  void kinematics_row_lanes(std::size_t i, KinematicSum* own);
   BlockSums<double> heat_sums_;
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far

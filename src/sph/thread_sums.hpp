@@ -50,9 +50,6 @@ class RowBlocks {
       for (std::size_t i = begin_[k]; i < begin_[k + 1]; ++i) end = std::max(end, reach(i));
       window_[k] = end;
     }
-    // Copies padded apart by a cache line, so that two threads never write one line.
-    offset_.assign(blocks + 1, 0);
-    for (std::size_t k = 0; k < blocks; ++k) offset_[k + 1] = offset_[k] + (window_[k] - begin_[k]) + pad_;
     // Per block m, the earlier blocks whose windows reach into it, in block order.
     earlier_first_.assign(blocks + 1, 0);
     earlier_.clear();
@@ -74,12 +71,6 @@ class RowBlocks {
   std::size_t window_end(std::size_t k) const {
     return window_[k];
   }
-  std::size_t copy_offset(std::size_t k) const {
-    return offset_[k];
-  }
-  std::size_t storage() const {
-    return offset_.empty() ? 0 : offset_.back();
-  }
   const std::size_t* earlier_begin(std::size_t m) const {
     return earlier_.data() + earlier_first_[m];
   }
@@ -88,56 +79,45 @@ class RowBlocks {
   }
 
  private:
-  static constexpr std::size_t pad_ = 8;  // elements (>= 64 bytes for any sum type)
-  std::vector<std::size_t> begin_;        // blocks + 1: block k has rows [begin_[k], begin_[k + 1])
-  std::vector<std::size_t> window_;       // block k's sums reach rows [begin_[k], window_[k])
-  std::vector<std::size_t> offset_;       // start of block k's copy in BlockSums
+  std::vector<std::size_t> begin_;   // blocks + 1: block k has rows [begin_[k], begin_[k + 1])
+  std::vector<std::size_t> window_;  // block k's sums reach rows [begin_[k], window_[k])
   std::vector<std::size_t> earlier_first_, earlier_;
 };
 
-// One block's copy of the sums, indexed by row (rows of its window only).
-template <class T>
-struct RowWindow {
-  T* data = nullptr;
-  std::size_t first = 0;
-  T& operator[](std::size_t i) const { return data[i - first]; }
-};
-
+// Every block's copy of the sums, indexed by row. A copy spans all n rows, so
+// that a row indexes it directly, but after the allocation only its block's
+// window is zeroed, written and read.
 template <class T>
 class BlockSums {
  public:
   // Outside the parallel region: room for every block's copy (allocates only when that grows).
-  void prepare(const RowBlocks& blocks) {
-    if (data_.size() < blocks.storage()) data_.resize(blocks.storage());
+  void prepare(const RowBlocks& blocks, std::size_t n) {
+    n_ = n;
+    if (data_.size() < blocks.count() * n) data_.resize(blocks.count() * n);
   }
-  // Block k's copy, zeroed (by the thread that runs block k).
-  RowWindow<T> zeroed(const RowBlocks& blocks, std::size_t k) {
-    T* own = data_.data() + blocks.copy_offset(k);
-    std::fill(own, own + (blocks.window_end(k) - blocks.begin(k)), T{});
-    return {own, blocks.begin(k)};
+  // Block k's copy, its window zeroed (by the thread that runs block k).
+  T* zeroed(const RowBlocks& blocks, std::size_t k) {
+    T* own = data_.data() + k * n_;
+    std::fill(own + blocks.begin(k), own + blocks.window_end(k), T{});
+    return own;
   }
   // Row i of block m: the copies holding it added in block order, add(total, part).
   template <class Add>
   T total(const RowBlocks& blocks, std::size_t m, std::size_t i, Add add) const {
-    T sum{};
-    bool first = true;
-    for (const std::size_t* k = blocks.earlier_begin(m); k != blocks.earlier_end(m); ++k) {
-      if (blocks.window_end(*k) <= i) continue;
-      const T& part = data_[blocks.copy_offset(*k) + (i - blocks.begin(*k))];
-      if (first) {
-        sum = part;
-        first = false;
-      } else {
-        add(sum, part);
-      }
-    }
-    const T& own = data_[blocks.copy_offset(m) + (i - blocks.begin(m))];
-    if (first) return own;
+    const T& own = data_[m * n_ + i];
+    const std::size_t* k = blocks.earlier_begin(m);
+    const std::size_t* const last = blocks.earlier_end(m);
+    while (k != last && blocks.window_end(*k) <= i) ++k;
+    if (k == last) return own;
+    T sum = data_[*k * n_ + i];
+    for (++k; k != last; ++k)
+      if (blocks.window_end(*k) > i) add(sum, data_[*k * n_ + i]);
     add(sum, own);
     return sum;
   }
 
  private:
+  std::size_t n_ = 0;
   std::vector<T> data_;
 };
 

@@ -17,7 +17,6 @@
 using namespace camouflet;
 using camouflet::sph::BlockSums;
 using camouflet::sph::RowBlocks;
-using camouflet::sph::RowWindow;
 
 namespace {
 
@@ -85,7 +84,7 @@ Outcome block_sums(const Lists& l, std::size_t blocks, int threads) {
   };
   rb.build(blocks, l.n, l.prefix.data(), 4, reach);
   BlockSums<double> sums;
-  sums.prepare(rb);
+  sums.prepare(rb, l.n);
   Outcome out;
   out.sums.assign(l.n, 0.0);
   std::size_t outside = 0;
@@ -94,7 +93,7 @@ Outcome block_sums(const Lists& l, std::size_t blocks, int threads) {
   {
 #pragma omp for schedule(static, 1)
     for (std::size_t k = 0; k < nb; ++k) {
-      const RowWindow<double> own = sums.zeroed(rb, k);
+      double* const own = sums.zeroed(rb, k);
       for (std::size_t i = rb.begin(k); i < rb.end(k); ++i) {
         double mine = 0.0;
         for (std::size_t e = l.prefix[i]; e < l.prefix[i + 1]; ++e) {

@@ -55,7 +55,7 @@ void SphSystem<D>::compute_accelerations() {
   if (options_.artificial_stress && D == 3) {
     // In blocks, so that the eigen-solves run on SIMD lanes (artificial_stress_lanes.cpp).
     constexpr std::size_t block = 256;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 4)  // eigen-solves vary in cost: balance them
     for (std::size_t b = 0; b < n; b += block) {
       const std::size_t count = std::min(block, n - b);
       double scale[block];
@@ -147,7 +147,7 @@ void SphSystem<D>::refresh_active_pairs() {
   constexpr std::size_t block = 256;
   const std::size_t n_blocks = (n + block - 1) / block;
   std::vector<std::vector<std::uint32_t>> found(n_blocks);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 4)
   for (std::size_t b = 0; b < n_blocks; ++b) {
     std::vector<std::uint32_t>& buffer = found[b];
     const std::size_t end = std::min(n, (b + 1) * block);
@@ -181,11 +181,20 @@ void SphSystem<D>::refresh_active_pairs() {
     upper_index_[i + 1] = upper_index_[i] + (active_offset_[i + 1] - active_upper_[i]);
 }
 
+namespace {
+// Row blocks per thread of the pair-once loops: more balance the load, but each block's window
+// reaches ~2 h of rows past its end, zeroed and added up once more (docs/performance.md).
+constexpr int blocks_per_thread = 4;
+}  // namespace
+
 template <int D>
 void SphSystem<D>::prepare_row_blocks() {
-  // Blocks of about equal cost for the team the pair loops will run on: the j > i entries plus a
-  // per-row share for the row's own work (its packed record, the finishing of its sums).
-  const std::size_t blocks = static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
+  // Blocks of about equal cost (the j > i entries plus a per-row share for the row's own work: its
+  // packed record, the finishing of its sums), several per thread, handed out dynamically: a thread
+  // that falls behind (a busy core, a costlier part of the body) is relieved by the others, and
+  // the sums do not depend on which thread runs a block. One thread: one block, the serial loop.
+  const int threads = std::max(1, omp_get_max_threads());
+  const std::size_t blocks = threads == 1 ? 1 : static_cast<std::size_t>(blocks_per_thread * threads);
   if (row_blocks_extraction_ == active_extractions_ &&
       row_blocks_.count() == std::min(blocks, std::max<std::size_t>(p_.real, 1)))
     return;
@@ -236,9 +245,8 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
 #pragma omp parallel
   {
-    // One block per thread (schedule(static, 1) with as many blocks as threads); the same thread
-    // adds up the block's rows after the barrier, while its copy is still in its cache.
-#pragma omp for schedule(static, 1)
+    // Blocks handed out one at a time (prepare_row_blocks()); rows are added up after the barrier.
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
       ForceSum* const own = force_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
@@ -309,7 +317,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
         total.compression_rate = std::max(total.compression_rate, part.compression_rate);
         total.count += part.count;
       };
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
       for (std::size_t k = 0; k < n_blocks; ++k) {
         for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
           ForceSum total = force_sums_.total(blocks, k, i, add);
@@ -367,7 +375,7 @@ void SphSystem<D>::kick(double dt) {
   heat_sums_.prepare(blocks, n);
 #pragma omp parallel
   {
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
       double* const own = heat_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
@@ -385,7 +393,7 @@ void SphSystem<D>::kick(double dt) {
       }
     }
     auto add = [](double& total, double part) { total += part; };
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k)
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i)
         p_.heating[i] += 0.25 * heat_sums_.total(blocks, k, i, add) * dt;
@@ -563,8 +571,8 @@ void SphSystem<D>::update_state(double dt, double time) {
   kinematic_sums_.prepare(blocks, n);
 #pragma omp parallel
   {
-    // One block per thread, as in force_pass().
-#pragma omp for schedule(static, 1)
+    // Blocks handed out one at a time, as in force_pass().
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
       KinematicSum* const own = kinematic_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
@@ -619,7 +627,7 @@ void SphSystem<D>::update_state(double dt, double time) {
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
     };
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k)
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
         const KinematicSum total = kinematic_sums_.total(blocks, k, i, add);

@@ -1,8 +1,8 @@
 #pragma once
 // Pair-symmetric particle sums under OpenMP without write conflicts.
 //
-// The rows (particles) of a pair-once loop are split into contiguous blocks,
-// one per thread, of about equal cost (pairs + a per-row share). A row i only
+// The rows (particles) of a pair-once loop are split into contiguous blocks
+// of about equal cost (pairs + a per-row share), a few per thread. A row i only
 // scatters to partners j > i, so block k's sums reach only the rows from its
 // first row up to the largest partner of its rows: its *window*. Each block
 // accumulates into its own copy of the sums over its window only, and row i's

@@ -373,21 +373,28 @@ void SphSystem<D>::kick(double dt) {
   const RowBlocks& blocks = row_blocks_;
   const std::size_t n_blocks = blocks.count();
   heat_sums_.prepare(blocks, n);
+  const std::size_t points = v_new.size();
+  heat_points_.resize(points);
+  const HeatPoint* const hp = heat_points_.data();
 #pragma omp parallel
   {
+    // v(n-1/2) + v(n+1/2) and m of every point in one 32-byte record (3-D): one line per neighbour.
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < points; ++k) heat_points_[k] = {v_old[k] + v_new[k], m[k]};
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
       double* const own = heat_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
-        const Vec<D> sum_i = v_old[i] + v_new[i];
+        const Vec<D> sum_i = hp[i].velocity_sum;
+        const double mi = hp[i].mass;
         double heat = 0.0;
         const std::size_t base = upper_index_[i];
         const auto list = active_upper_neighbours(i);
         for (std::size_t e = 0; e < list.size(); ++e) {
           const std::uint32_t j = list[e];
-          const double work = dot(d[base + e], sum_i - (v_old[j] + v_new[j]));  // 2 d_ij . vbar_ij
-          heat += work * m[j];
-          if (j < n) own[j] += work * m[i];
+          const double work = dot(d[base + e], sum_i - hp[j].velocity_sum);  // 2 d_ij . vbar_ij
+          heat += work * hp[j].mass;
+          if (j < n) own[j] += work * mi;
         }
         own[i] += heat;
       }

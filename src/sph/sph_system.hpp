@@ -291,6 +291,11 @@ class SphSystem {
   void force_row_lanes(std::size_t i, ForceSum* own);
   void kinematics_row_lanes(std::size_t i, KinematicSum* own);
   BlockSums<double> heat_sums_;
+  struct alignas(32) HeatPoint {  // what kick()'s heating loop reads of a neighbour
+    Vec<D> velocity_sum;          // m/s, v(n-1/2) + v(n+1/2)
+    double mass;                  // kg
+  };
+  std::vector<HeatPoint> heat_points_;
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far
   std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to

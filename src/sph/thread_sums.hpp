@@ -20,6 +20,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 namespace camouflet::sph {
@@ -85,40 +88,51 @@ class RowBlocks {
 };
 
 // Every block's copy of the sums, indexed by row. A copy spans all n rows, so
-// that a row indexes it directly, but after the allocation only its block's
-// window is zeroed, written and read.
+// that a row indexes it directly, but only its block's window is ever zeroed,
+// written or read; the storage is allocated without initialising it, so the
+// pages outside the windows are never touched and cost no memory (T is an
+// aggregate of doubles and ints: the allocation creates its objects, C++20).
 template <class T>
 class BlockSums {
  public:
   // Outside the parallel region: room for every block's copy (allocates only when that grows).
   void prepare(const RowBlocks& blocks, std::size_t n) {
     n_ = n;
-    if (data_.size() < blocks.count() * n) data_.resize(blocks.count() * n);
+    const std::size_t need = blocks.count() * n;
+    if (need > capacity_) {
+      data_.reset(static_cast<T*>(::operator new (need * sizeof(T), std::align_val_t{64})));
+      capacity_ = need;
+    }
   }
   // Block k's copy, its window zeroed (by the thread that runs block k).
   T* zeroed(const RowBlocks& blocks, std::size_t k) {
-    T* own = data_.data() + k * n_;
+    T* own = data_.get() + k * n_;
     std::fill(own + blocks.begin(k), own + blocks.window_end(k), T{});
     return own;
   }
   // Row i of block m: the copies holding it added in block order, add(total, part).
   template <class Add>
   T total(const RowBlocks& blocks, std::size_t m, std::size_t i, Add add) const {
-    const T& own = data_[m * n_ + i];
+    const T* data = data_.get();
+    const T& own = data[m * n_ + i];
     const std::size_t* k = blocks.earlier_begin(m);
     const std::size_t* const last = blocks.earlier_end(m);
     while (k != last && blocks.window_end(*k) <= i) ++k;
     if (k == last) return own;
-    T sum = data_[*k * n_ + i];
+    T sum = data[*k * n_ + i];
     for (++k; k != last; ++k)
-      if (blocks.window_end(*k) > i) add(sum, data_[*k * n_ + i]);
+      if (blocks.window_end(*k) > i) add(sum, data[*k * n_ + i]);
     add(sum, own);
     return sum;
   }
 
  private:
-  std::size_t n_ = 0;
-  std::vector<T> data_;
+  static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+  struct Release {
+    void operator()(T* p) const { ::operator delete (p, std::align_val_t{64}); }
+  };
+  std::size_t n_ = 0, capacity_ = 0;
+  std::unique_ptr<T, Release> data_;
 };
 
 }  // namespace camouflet::sph

@@ -42,28 +42,6 @@ inline LaneMask fill_group(const std::uint32_t* list, std::size_t width, std::ui
 }  // namespace
 
 template <int D>
-void SphSystem<D>::pack_pair_points() {
-  using P = PairPoint<D>;
-  const std::size_t total = p_.position.size();
-  pair_points_.resize(total);
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < total; ++k) {
-    double* f = pair_points_[k].f;
-    for (int a = 0; a < D; ++a) {
-      f[P::x + a] = p_.position[k][a];
-      f[P::v + a] = p_.velocity[k][a];
-    }
-    f[P::h] = p_.smoothing_length[k];
-    f[P::m] = p_.mass[k];
-    const SymTensor& s = p_.stress_term[k];
-    const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
-    for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
-    f[P::eta] = sum_density_[k];  // eta_q: the pair weights (quadrature_density)
-    f[P::c] = p_.wave_speed[k];
-  }
-}
-
-template <int D>
 void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
   using P = PairPoint<D>;
   const std::size_t n = p_.real;
@@ -237,8 +215,6 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
     for (int b = 0; b < D; ++b) mine.L[a][b] += sum_lanes(L_sum[a][b]);
 }
 
-template void SphSystem<2>::pack_pair_points();
-template void SphSystem<3>::pack_pair_points();
 template void SphSystem<2>::force_row_lanes(std::size_t, ForceSum*);
 template void SphSystem<3>::force_row_lanes(std::size_t, ForceSum*);
 template void SphSystem<2>::kinematics_row_lanes(std::size_t, KinematicSum*);

@@ -87,6 +87,10 @@ void SphSystem<D>::prepare_point_factors() {
   point_volume_.resize(total);
   has_tensile_.resize(total);
   const bool tensile = options_.artificial_stress;
+  // The SIMD pair loops (no kernel correction) read the packed records, filled in the same pass.
+  const bool pack = !options_.kernel_correction;
+  using P = PairPoint<D>;
+  if (pack) pair_points_.resize(total);
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < total; ++k) {
     const double eta_q = quadrature_density(k);
@@ -96,8 +100,20 @@ void SphSystem<D>::prepare_point_factors() {
     const SymTensor& r = p_.tensile_term[k];
     has_tensile_[k] =
         tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
+    if (!pack) continue;
+    double* f = pair_points_[k].f;
+    for (int a = 0; a < D; ++a) {
+      f[P::x + a] = p_.position[k][a];
+      f[P::v + a] = p_.velocity[k][a];
+    }
+    f[P::h] = p_.smoothing_length[k];
+    f[P::m] = p_.mass[k];
+    const SymTensor& s = p_.stress_term[k];
+    const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
+    for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
+    f[P::eta] = eta_q;  // eta_q: the pair weights (quadrature_density)
+    f[P::c] = p_.wave_speed[k];
   }
-  if (!options_.kernel_correction) pack_pair_points();
 }
 
 namespace {
@@ -550,12 +566,17 @@ void SphSystem<D>::update_state(double dt, double time) {
   const auto& m = p_.mass;
   const auto& eta = p_.planar_density;
   const auto& h = p_.smoothing_length;
-  std::vector<double> eta_new(n), h_new(n);
+  // Scratch kept between steps (no allocation in the cycle): every entry is written before it is read.
+  auto& eta_new = scratch_eta_;
+  auto& h_new = scratch_h_;
+  auto& x_end = scratch_x_;
+  eta_new.resize(n);
+  h_new.resize(n);
+  x_end.resize(n);
 
   // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
   // with v(n+1/2): second-order in time, and the p dV work then matches the
   // kinetic energy the forces exchange far better than at x(n+1).
-  std::vector<Vec<D>> x_end(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     x_end[i] = p_.position[i];

@@ -185,7 +185,9 @@ bool NeighbourSearch<D>::needs_rebuild(std::span<const Vec<D>> x, std::span<cons
 template <int D>
 double NeighbourSearch<D>::skin_used(std::span<const Vec<D>> x, std::span<const double> h) const {
   if (x.size() != x_build_.size() || builds_ == 0) return std::numeric_limits<double>::infinity();
+  // Called several times a cycle: parallel (a max is exact, so any thread count gives the same bits).
   double d2_max = 0.0, dh_max = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : d2_max, dh_max)
   for (std::size_t i = 0; i < x.size(); ++i) {
     d2_max = std::max(d2_max, squared_distance(x[i], x_build_[i]));
     dh_max = std::max(dh_max, h[i] - h_build_[i]);

@@ -42,28 +42,6 @@ inline LaneMask fill_group(const std::uint32_t* list, std::size_t width, std::ui
 }  // namespace
 
 template <int D>
-void SphSystem<D>::pack_pair_points() {
-  using P = PairPoint<D>;
-  const std::size_t total = p_.position.size();
-  pair_points_.resize(total);
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < total; ++k) {
-    double* f = pair_points_[k].f;
-    for (int a = 0; a < D; ++a) {
-      f[P::x + a] = p_.position[k][a];
-      f[P::v + a] = p_.velocity[k][a];
-    }
-    f[P::h] = p_.smoothing_length[k];
-    f[P::m] = p_.mass[k];
-    const SymTensor& s = p_.stress_term[k];
-    const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
-    for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
-    f[P::eta] = sum_density_[k];  // eta_q: the pair weights (quadrature_density)
-    f[P::c] = p_.wave_speed[k];
-  }
-}
-
-template <int D>
 void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
   using P = PairPoint<D>;
   const std::size_t n = p_.real;
@@ -84,25 +62,27 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     const std::size_t width = std::min<std::size_t>(pair_lanes, list.size() - e0);
     std::uint32_t j[pair_lanes];
     const LaneMask valid = fill_group(list.data() + e0, width, static_cast<std::uint32_t>(i), j);
+    Lanes fj[16];  // the neighbours' records, field by field
+    load_lines(points, j, 2, fj);
     Lanes dx[D], dv[D];
-    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - gather(points, j, P::x + a);
+    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - fj[P::x + a];
     Lanes r2 = zero;
     for (int a = 0; a < D; ++a) r2 += dx[a] * dx[a];
-    const Lanes hij = 0.5 * (hi + gather(points, j, P::h));
+    const Lanes hij = 0.5 * (hi + fj[P::h]);
     const LaneMask inside = valid & (r2 < support_factor * support_factor * hij * hij);
     const Lanes inv_h = 1.0 / hij;
     const Lanes r = sqrt_lanes(r2);
     const auto w = kernel_.pair_terms(r, inv_h);
     Lanes grad[D];
     for (int a = 0; a < D; ++a) grad[a] = dx[a] * w.gradient_factor;
-    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - gather(points, j, P::v + a);
+    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - fj[P::v + a];
     Lanes vr = zero;
     for (int a = 0; a < D; ++a) vr += dv[a] * dx[a];
     // Approaching pair: Monaghan 1992, eq. (4.2).
     const LaneMask approaching = inside & (vr < 0.0);
     const Lanes mu = approaching ? hij * vr / (r2 + 0.01 * hij * hij) : zero;
-    const Lanes eta_j = gather(points, j, P::eta);
-    const Lanes c_mean = 0.5 * (ci + gather(points, j, P::c));
+    const Lanes eta_j = fj[P::eta];
+    const Lanes c_mean = 0.5 * (ci + fj[P::c]);
     Lanes pi_ij;
     if (switched) {
       Lanes alpha_j;
@@ -147,13 +127,13 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     const Lanes inv_eta_j = 1.0 / eta_j;
     Lanes pair[6];
     for (int c = 0; c < 6; ++c) {
-      const Lanes sj = gather(points, j, P::stress + c);
+      const Lanes sj = fj[P::stress + c];
       pair[c] = volume_form ? fi[P::stress + c] * inv_eta_j + sj * inv_eta_i
                             : fi[P::stress + c] * inv_eta_i + sj * inv_eta_j;
     }
     Lanes force[D];
     apply_lanes<D>(pair, grad, force);
-    const Lanes mj = gather(points, j, P::m);
+    const Lanes mj = fj[P::m];
     Lanes reaction[D];
     for (int a = 0; a < D; ++a) {
       force[a] = inside ? force[a] - dissipation[a] : zero;
@@ -194,17 +174,19 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
     const std::size_t width = std::min<std::size_t>(pair_lanes, list.size() - e0);
     std::uint32_t j[pair_lanes];
     const LaneMask valid = fill_group(list.data() + e0, width, static_cast<std::uint32_t>(i), j);
+    Lanes fj[8];  // the first line of the neighbours' records (x, h, v, m), field by field
+    load_lines(points, j, 1, fj);
     Lanes dx[D], dv[D];
-    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - gather(points, j, P::x + a);
+    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - fj[P::x + a];
     Lanes r2 = zero;
     for (int a = 0; a < D; ++a) r2 += dx[a] * dx[a];
-    const Lanes hij = 0.5 * (hi + gather(points, j, P::h));
+    const Lanes hij = 0.5 * (hi + fj[P::h]);
     const LaneMask inside = valid & (r2 < support_factor * support_factor * hij * hij);
     const Lanes gradient_factor = kernel_.pair_terms(sqrt_lanes(r2), 1.0 / hij).gradient_factor;
     Lanes grad[D];
     for (int a = 0; a < D; ++a) grad[a] = inside ? dx[a] * gradient_factor : zero;
-    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - gather(points, j, P::v + a);
-    const Lanes mj = gather(points, j, P::m), eta_j = gather(points, j, P::eta);
+    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - fj[P::v + a];
+    const Lanes mj = fj[P::m], eta_j = gather(points, j, P::eta);
     // Volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j.
     const Lanes weight_i = volume_form ? mj / eta_j : mj * inv_eta_i;
     const Lanes weight_j = volume_form ? Lanes{} + volume_i : mi * (1.0 / eta_j);
@@ -233,8 +215,6 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
     for (int b = 0; b < D; ++b) mine.L[a][b] += sum_lanes(L_sum[a][b]);
 }
 
-template void SphSystem<2>::pack_pair_points();
-template void SphSystem<3>::pack_pair_points();
 template void SphSystem<2>::force_row_lanes(std::size_t, ForceSum*);
 template void SphSystem<3>::force_row_lanes(std::size_t, ForceSum*);
 template void SphSystem<2>::kinematics_row_lanes(std::size_t, KinematicSum*);

@@ -55,7 +55,7 @@ void SphSystem<D>::compute_accelerations() {
   if (options_.artificial_stress && D == 3) {
     // In blocks, so that the eigen-solves run on SIMD lanes (artificial_stress_lanes.cpp).
     constexpr std::size_t block = 256;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 4)  // eigen-solves vary in cost: balance them
     for (std::size_t b = 0; b < n; b += block) {
       const std::size_t count = std::min(block, n - b);
       double scale[block];
@@ -87,6 +87,10 @@ void SphSystem<D>::prepare_point_factors() {
   point_volume_.resize(total);
   has_tensile_.resize(total);
   const bool tensile = options_.artificial_stress;
+  // The SIMD pair loops (no kernel correction) read the packed records, filled in the same pass.
+  const bool pack = !options_.kernel_correction;
+  using P = PairPoint<D>;
+  if (pack) pair_points_.resize(total);
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < total; ++k) {
     const double eta_q = quadrature_density(k);
@@ -96,8 +100,20 @@ void SphSystem<D>::prepare_point_factors() {
     const SymTensor& r = p_.tensile_term[k];
     has_tensile_[k] =
         tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
+    if (!pack) continue;
+    double* f = pair_points_[k].f;
+    for (int a = 0; a < D; ++a) {
+      f[P::x + a] = p_.position[k][a];
+      f[P::v + a] = p_.velocity[k][a];
+    }
+    f[P::h] = p_.smoothing_length[k];
+    f[P::m] = p_.mass[k];
+    const SymTensor& s = p_.stress_term[k];
+    const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
+    for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
+    f[P::eta] = eta_q;  // eta_q: the pair weights (quadrature_density)
+    f[P::c] = p_.wave_speed[k];
   }
-  if (!options_.kernel_correction) pack_pair_points();
 }
 
 namespace {
@@ -147,7 +163,7 @@ void SphSystem<D>::refresh_active_pairs() {
   constexpr std::size_t block = 256;
   const std::size_t n_blocks = (n + block - 1) / block;
   std::vector<std::vector<std::uint32_t>> found(n_blocks);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 4)
   for (std::size_t b = 0; b < n_blocks; ++b) {
     std::vector<std::uint32_t>& buffer = found[b];
     const std::size_t end = std::min(n, (b + 1) * block);
@@ -181,6 +197,37 @@ void SphSystem<D>::refresh_active_pairs() {
     upper_index_[i + 1] = upper_index_[i] + (active_offset_[i + 1] - active_upper_[i]);
 }
 
+namespace {
+// Row blocks per thread of the pair-once loops: more balance the load, but each block's window
+// reaches ~2 h of rows past its end, zeroed and added up once more (docs/performance.md).
+constexpr int blocks_per_thread = 4;
+}  // namespace
+
+template <int D>
+void SphSystem<D>::prepare_row_blocks() {
+  // Blocks of about equal cost (the j > i entries plus a per-row share for the row's own work: its
+  // packed record, the finishing of its sums), several per thread, handed out dynamically: a thread
+  // that falls behind (a busy core, a costlier part of the body) is relieved by the others, and
+  // the sums do not depend on which thread runs a block. One thread: one block, the serial loop.
+  const int threads = std::max(1, omp_get_max_threads());
+  const std::size_t blocks = threads == 1 ? 1 : static_cast<std::size_t>(blocks_per_thread * threads);
+  if (row_blocks_extraction_ == active_extractions_ &&
+      row_blocks_.count() == std::min(blocks, std::max<std::size_t>(p_.real, 1)))
+    return;
+  const std::size_t n = p_.real;
+  constexpr std::size_t row_cost = 4;  // pair entries
+  // One past the largest particle among row i's j > i entries (ghosts and coupling points, j >= n,
+  // sort after the particles in the list and have no sums).
+  auto reach = [&](std::size_t i) {
+    const auto list = active_upper_neighbours(i);
+    std::size_t e = list.size();
+    while (e > 0 && list[e - 1] >= n) --e;
+    return e > 0 ? std::max<std::size_t>(i + 1, list[e - 1] + 1) : i + 1;
+  };
+  row_blocks_.build(blocks, n, upper_index_.data(), row_cost, reach);
+  row_blocks_extraction_ = active_extractions_;
+}
+
 template <int D>
 void SphSystem<D>::force_pass(bool write_rates) {
   // The momentum sum of sph_system.hpp, pair-symmetric: each pair of
@@ -197,7 +244,10 @@ void SphSystem<D>::force_pass(bool write_rates) {
   refresh_active_pairs();
   prepare_point_factors();
   pair_dissipation_.resize(upper_index_[n]);
-  force_sums_.prepare(n);
+  prepare_row_blocks();
+  const RowBlocks& blocks = row_blocks_;
+  const std::size_t n_blocks = blocks.count();
+  force_sums_.prepare(blocks, n);
   const bool tensile = options_.artificial_stress;
   const bool volume_form = options_.volume_form;
   const bool switched = options_.viscosity_switch;
@@ -211,83 +261,88 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
 #pragma omp parallel
   {
-    ForceSum* own = force_sums_.own_zeroed();
-#pragma omp for schedule(static, 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
-        force_row_lanes(i, own);
-        continue;
-      }
-      Vec<D> acc{};
-      double mu_max = 0.0;
-      int count = 0;
-      const std::size_t base = upper_index_[i];
-      const auto list = active_upper_neighbours(i);
-      for (std::size_t e = 0; e < list.size(); ++e) {
-        const std::uint32_t j = list[e];
-        const Vec<D> dx = x[i] - x[j];
-        const double r2 = dot(dx, dx);
-        const double hij = pair_smoothing_length(h[i], h[j]);
-        if (r2 >= support_factor * support_factor * hij * hij) {
-          pair_dissipation_[base + e] = Vec<D>{};
+    // Blocks handed out one at a time (prepare_row_blocks()); rows are added up after the barrier.
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k) {
+      ForceSum* const own = force_sums_.zeroed(blocks, k);
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
+          force_row_lanes(i, own);
           continue;
         }
-        const double inv_h = 1.0 / hij;
-        const double r = std::sqrt(r2);
-        const auto w = kernel_.pair_terms(r, inv_h);
-        const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
-        const Vec<D> dv = v[i] - v[j];
-        const double vr = dot(dv, dx);
-        Vec<D> dissipation{};
-        double mu = 0.0;
-        if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
-          mu = hij * vr / (r2 + 0.01 * hij * hij);
-          const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-          const PairViscosity q =
-              switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
-          const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
-          mu_max = std::max(mu_max, -mu);
-          dissipation = grad * pi_ij;
+        Vec<D> acc{};
+        double mu_max = 0.0;
+        int count = 0;
+        const std::size_t base = upper_index_[i];
+        const auto list = active_upper_neighbours(i);
+        for (std::size_t e = 0; e < list.size(); ++e) {
+          const std::uint32_t j = list[e];
+          const Vec<D> dx = x[i] - x[j];
+          const double r2 = dot(dx, dx);
+          const double hij = pair_smoothing_length(h[i], h[j]);
+          if (r2 >= support_factor * support_factor * hij * hij) {
+            pair_dissipation_[base + e] = Vec<D>{};
+            continue;
+          }
+          const double inv_h = 1.0 / hij;
+          const double r = std::sqrt(r2);
+          const auto w = kernel_.pair_terms(r, inv_h);
+          const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
+          const Vec<D> dv = v[i] - v[j];
+          const double vr = dot(dv, dx);
+          Vec<D> dissipation{};
+          double mu = 0.0;
+          if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
+            mu = hij * vr / (r2 + 0.01 * hij * hij);
+            const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+            const PairViscosity q =
+                switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
+            const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+            mu_max = std::max(mu_max, -mu);
+            dissipation = grad * pi_ij;
+          }
+          if (tensile && (has_tensile_[i] | has_tensile_[j])) {
+            const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
+            dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
+          }
+          pair_dissipation_[base + e] = dissipation;
+          // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j /
+          // eta_j).
+          const SymTensor pair = volume_form
+                                     ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
+                                     : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
+          const Vec<D> force = apply<D>(pair, grad) - dissipation;
+          acc += force * m[j];
+          ++count;
+          if (j < n) {
+            ForceSum& other = own[j];
+            other.acceleration -= force * m[i];
+            other.compression_rate = std::max(other.compression_rate, -mu);
+            ++other.count;
+          }
         }
-        if (tensile && (has_tensile_[i] | has_tensile_[j])) {
-          const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
-          dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
-        }
-        pair_dissipation_[base + e] = dissipation;
-        // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
-        const SymTensor pair = volume_form ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
-                                           : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
-        const Vec<D> force = apply<D>(pair, grad) - dissipation;
-        acc += force * m[j];
-        ++count;
-        if (j < n) {
-          ForceSum& other = own[j];
-          other.acceleration -= force * m[i];
-          other.compression_rate = std::max(other.compression_rate, -mu);
-          ++other.count;
-        }
+        ForceSum& mine = own[i];
+        mine.acceleration += acc;
+        mine.compression_rate = std::max(mine.compression_rate, mu_max);
+        mine.count += count;
       }
-      ForceSum& mine = own[i];
-      mine.acceleration += acc;
-      mine.compression_rate = std::max(mine.compression_rate, mu_max);
-      mine.count += count;
     }
     if (write_rates) {
-      const int team = omp_get_num_threads();
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
-        ForceSum total = force_sums_.at(0, i);
-        for (int t = 1; t < team; ++t) {
-          const ForceSum& part = force_sums_.at(t, i);
-          total.acceleration += part.acceleration;
-          total.compression_rate = std::max(total.compression_rate, part.compression_rate);
-          total.count += part.count;
+      auto add = [](ForceSum& total, const ForceSum& part) {
+        total.acceleration += part.acceleration;
+        total.compression_rate = std::max(total.compression_rate, part.compression_rate);
+        total.count += part.count;
+      };
+#pragma omp for schedule(dynamic, 1)
+      for (std::size_t k = 0; k < n_blocks; ++k) {
+        for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+          ForceSum total = force_sums_.total(blocks, k, i, add);
+          if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
+            total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
+          p_.acceleration[i] = total.acceleration;
+          p_.compression_rate[i] = total.compression_rate;
+          p_.neighbour_count[i] = total.count;
         }
-        if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
-          total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
-        p_.acceleration[i] = total.acceleration;
-        p_.compression_rate[i] = total.compression_rate;
-        p_.neighbour_count[i] = total.count;
       }
     }
   }
@@ -330,31 +385,41 @@ void SphSystem<D>::kick(double dt) {
   const auto& v_new = p_.velocity;
   const auto& m = p_.mass;
   const auto& d = pair_dissipation_;
-  heat_sums_.prepare(n);
+  // The blocks of the force pass that stored d (the same extraction; thread_sums.hpp).
+  const RowBlocks& blocks = row_blocks_;
+  const std::size_t n_blocks = blocks.count();
+  heat_sums_.prepare(blocks, n);
+  const std::size_t points = v_new.size();
+  heat_points_.resize(points);
+  const HeatPoint* const hp = heat_points_.data();
 #pragma omp parallel
   {
-    double* own = heat_sums_.own_zeroed();
-#pragma omp for schedule(static, 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec<D> sum_i = v_old[i] + v_new[i];
-      double heat = 0.0;
-      const std::size_t base = upper_index_[i];
-      const auto list = active_upper_neighbours(i);
-      for (std::size_t e = 0; e < list.size(); ++e) {
-        const std::uint32_t j = list[e];
-        const double work = dot(d[base + e], sum_i - (v_old[j] + v_new[j]));  // 2 d_ij . vbar_ij
-        heat += work * m[j];
-        if (j < n) own[j] += work * m[i];
-      }
-      own[i] += heat;
-    }
-    const int team = omp_get_num_threads();
+    // v(n-1/2) + v(n+1/2) and m of every point in one 32-byte record (3-D): one line per neighbour.
 #pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      double heat = heat_sums_.at(0, i);
-      for (int t = 1; t < team; ++t) heat += heat_sums_.at(t, i);
-      p_.heating[i] += 0.25 * heat * dt;
+    for (std::size_t k = 0; k < points; ++k) heat_points_[k] = {v_old[k] + v_new[k], m[k]};
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k) {
+      double* const own = heat_sums_.zeroed(blocks, k);
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        const Vec<D> sum_i = hp[i].velocity_sum;
+        const double mi = hp[i].mass;
+        double heat = 0.0;
+        const std::size_t base = upper_index_[i];
+        const auto list = active_upper_neighbours(i);
+        for (std::size_t e = 0; e < list.size(); ++e) {
+          const std::uint32_t j = list[e];
+          const double work = dot(d[base + e], sum_i - hp[j].velocity_sum);  // 2 d_ij . vbar_ij
+          heat += work * hp[j].mass;
+          if (j < n) own[j] += work * mi;
+        }
+        own[i] += heat;
+      }
     }
+    auto add = [](double& total, double part) { total += part; };
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k)
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i)
+        p_.heating[i] += 0.25 * heat_sums_.total(blocks, k, i, add) * dt;
   }
   if (options_.conductivity > 0.0) conduct_heat(dt);
 }
@@ -501,12 +566,17 @@ void SphSystem<D>::update_state(double dt, double time) {
   const auto& m = p_.mass;
   const auto& eta = p_.planar_density;
   const auto& h = p_.smoothing_length;
-  std::vector<double> eta_new(n), h_new(n);
+  // Scratch kept between steps (no allocation in the cycle): every entry is written before it is read.
+  auto& eta_new = scratch_eta_;
+  auto& h_new = scratch_h_;
+  auto& x_end = scratch_x_;
+  eta_new.resize(n);
+  h_new.resize(n);
+  x_end.resize(n);
 
   // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
   // with v(n+1/2): second-order in time, and the p dV work then matches the
   // kinetic energy the forces exchange far better than at x(n+1).
-  std::vector<Vec<D>> x_end(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     x_end[i] = p_.position[i];
@@ -523,102 +593,107 @@ void SphSystem<D>::update_state(double dt, double time) {
   // Pair-symmetric like force_pass(): v_ji (x) grad_j W_ji = v_ij (x) grad_i W_ij, so each
   // pair of particles is evaluated once and adds to both with its own weight
   // (volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j).
-  kinematic_sums_.prepare(n);
+  prepare_row_blocks();
+  const RowBlocks& blocks = row_blocks_;
+  const std::size_t n_blocks = blocks.count();
+  kinematic_sums_.prepare(blocks, n);
 #pragma omp parallel
   {
-    KinematicSum* own = kinematic_sums_.own_zeroed();
-#pragma omp for schedule(static, 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
-        kinematics_row_lanes(i, own);
-        continue;
-      }
-      KinematicSum mine;
-      for (const std::uint32_t j : active_upper_neighbours(i)) {
-        const Vec<D> dx = x[i] - x[j];
-        const double r2 = dot(dx, dx);
-        const double hij = pair_smoothing_length(h[i], h[j]);
-        if (r2 >= support_factor * support_factor * hij * hij) continue;
-        const Vec<D> grad = dx * kernel_.pair_terms(std::sqrt(r2), 1.0 / hij).gradient_factor;
-        const Vec<D> dv = v[i] - v[j];
-        const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
-        const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
-        const bool both = j < n;
-        if (corrected) {
-          // Continuity with the pair gradient of the momentum sum (conjugate);
-          // L with each particle's own correction, exact for linear fields.
-          const double rate = dot(dv, pair_gradient(i, j, grad));
-          const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
-          mine.rate += weight_i * rate;
-          for (int a = 0; a < D; ++a)
-            for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
-          if (both) {
-            const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
-            own[j].rate += weight_j * rate;
+    // Blocks handed out one at a time, as in force_pass().
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k) {
+      KinematicSum* const own = kinematic_sums_.zeroed(blocks, k);
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
+          kinematics_row_lanes(i, own);
+          continue;
+        }
+        KinematicSum mine;
+        for (const std::uint32_t j : active_upper_neighbours(i)) {
+          const Vec<D> dx = x[i] - x[j];
+          const double r2 = dot(dx, dx);
+          const double hij = pair_smoothing_length(h[i], h[j]);
+          if (r2 >= support_factor * support_factor * hij * hij) continue;
+          const Vec<D> grad = dx * kernel_.pair_terms(std::sqrt(r2), 1.0 / hij).gradient_factor;
+          const Vec<D> dv = v[i] - v[j];
+          const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
+          const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
+          const bool both = j < n;
+          if (corrected) {
+            // Continuity with the pair gradient of the momentum sum (conjugate);
+            // L with each particle's own correction, exact for linear fields.
+            const double rate = dot(dv, pair_gradient(i, j, grad));
+            const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
+            mine.rate += weight_i * rate;
             for (int a = 0; a < D; ++a)
-              for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
-          }
-        } else {
-          const double rate = dot(dv, grad);
-          mine.rate += weight_i * rate;
-          for (int a = 0; a < D; ++a)
-            for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * grad[b];
-          if (both) {
-            own[j].rate += weight_j * rate;
+              for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
+            if (both) {
+              const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
+              own[j].rate += weight_j * rate;
+              for (int a = 0; a < D; ++a)
+                for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
+            }
+          } else {
+            const double rate = dot(dv, grad);
+            mine.rate += weight_i * rate;
             for (int a = 0; a < D; ++a)
-              for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * grad[b];
+              for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * grad[b];
+            if (both) {
+              own[j].rate += weight_j * rate;
+              for (int a = 0; a < D; ++a)
+                for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * grad[b];
+            }
           }
         }
-      }
-      own[i].rate += mine.rate;
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
-    }
-    const int team = omp_get_num_threads();
-#pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      KinematicSum total = kinematic_sums_.at(0, i);
-      for (int t = 1; t < team; ++t) {
-        const KinematicSum& part = kinematic_sums_.at(t, i);
-        total.rate += part.rate;
+        own[i].rate += mine.rate;
         for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
+          for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
       }
-      const double eta_rate = total.rate;
-      double L[3][3] = {};
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
-      // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
-      // matches the momentum sum (energy-consistent).
-      if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
-      SymTensor d{L[0][0],
-                  L[1][1],
-                  L[2][2],
-                  0.5 * (L[0][1] + L[1][0]),
-                  0.5 * (L[1][2] + L[2][1]),
-                  0.5 * (L[2][0] + L[0][2])};
-      p_.strain_rate[i] = d;
-      if (options_.viscosity_switch) {
-        // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
-        // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
-        const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
-        const double source = std::max(-d.trace(), 0.0);
-        const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
-        const double b = 1.0 / tau + source;
-        const double target = a / b;
-        p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
-      }
-      p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
-      // Continuity, integrated as d ln(eta) so that eta stays positive.
-      eta_new[i] = eta[i] * std::exp(dt * eta_rate);
-      double hi = h[i];
-      if (options_.variable_smoothing_length) {
-        const double h0 = p_.reference_smoothing_length[i];
-        hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
-        hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
-      }
-      h_new[i] = hi;
     }
+    auto add = [](KinematicSum& total, const KinematicSum& part) {
+      total.rate += part.rate;
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
+    };
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k)
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        const KinematicSum total = kinematic_sums_.total(blocks, k, i, add);
+        const double eta_rate = total.rate;
+        double L[3][3] = {};
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
+        // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
+        // matches the momentum sum (energy-consistent).
+        if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
+        SymTensor d{L[0][0],
+                    L[1][1],
+                    L[2][2],
+                    0.5 * (L[0][1] + L[1][0]),
+                    0.5 * (L[1][2] + L[2][1]),
+                    0.5 * (L[2][0] + L[0][2])};
+        p_.strain_rate[i] = d;
+        if (options_.viscosity_switch) {
+          // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
+          // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
+          const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
+          const double source = std::max(-d.trace(), 0.0);
+          const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
+          const double b = 1.0 / tau + source;
+          const double target = a / b;
+          p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
+        }
+        p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
+        // Continuity, integrated as d ln(eta) so that eta stays positive.
+        eta_new[i] = eta[i] * std::exp(dt * eta_rate);
+        double hi = h[i];
+        if (options_.variable_smoothing_length) {
+          const double h0 = p_.reference_smoothing_length[i];
+          hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
+          hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
+        }
+        h_new[i] = hi;
+      }
   }
 
   std::size_t limited = 0;
@@ -676,6 +751,8 @@ template void SphSystem<2>::compute_correction();
 template void SphSystem<3>::compute_correction();
 template void SphSystem<2>::refresh_active_pairs();
 template void SphSystem<3>::refresh_active_pairs();
+template void SphSystem<2>::prepare_row_blocks();
+template void SphSystem<3>::prepare_row_blocks();
 template void SphSystem<2>::force_pass(bool);
 template void SphSystem<3>::force_pass(bool);
 template void SphSystem<2>::prepare_point_factors();

@@ -133,7 +133,8 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
 template <int D>
 void SphSystem<D>::gather_material_state() {
   const std::size_t n = p_.real;
-#pragma omp parallel for schedule(static)
+  std::size_t bad = 0;  // non-finite points; the serial search below names the first
+#pragma omp parallel for schedule(static) reduction(+ : bad)
   for (std::size_t i = 0; i < n; ++i) {
     const auto& pts = batches_[p_.material[i]];
     const std::size_t k = p_.slot[i];
@@ -148,8 +149,9 @@ void SphSystem<D>::gather_material_state() {
     p_.plastic_strain[i] = pts.plastic_strain[k];
     p_.damage[i] = pts.damage[k];
     p_.stress_term[i] = sigma * (geometric_weight(p_.position[i]) / p_.planar_density[i]);
+    if (!std::isfinite(p + sigma.xx + sigma.yy + sigma.xy + p_.wave_speed[i])) ++bad;
   }
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n && bad > 0; ++i)
     if (!std::isfinite(p_.pressure[i]) ||
         !std::isfinite(p_.stress[i].xx + p_.stress[i].yy + p_.stress[i].xy) ||
         !std::isfinite(p_.wave_speed[i]))
@@ -189,6 +191,7 @@ void SphSystem<D>::prepare_neighbours() {
   if (!force_rebuild_ && !search_.needs_rebuild(p_.position, p_.smoothing_length)) return;
   force_rebuild_ = false;
   double h_max = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : h_max)
   for (std::size_t i = 0; i < n; ++i) h_max = std::max(h_max, p_.smoothing_length[i]);
   ghost_reach_ = support_factor * h_max + skin_;
   ghosts_ = make_ghosts(p_.position, n, planes_, ghost_reach_);
@@ -281,13 +284,26 @@ template <int D>
 TimeStepLimit SphSystem<D>::stable_time_step() const {
   TimeStepLimit best{std::numeric_limits<double>::infinity(), "no particles"};
   std::size_t which = 0;
-  for (std::size_t i = 0; i < p_.real; ++i) {
-    const double c = p_.wave_speed[i];
-    const double speed =
-        c + norm(p_.velocity[i]) +
-        0.6 * (options_.viscosity_alpha * c + options_.viscosity_beta * p_.compression_rate[i]);
-    const double dt = speed > 0.0 ? p_.smoothing_length[i] / speed : std::numeric_limits<double>::infinity();
-    if (dt < best.dt) best.dt = dt, which = i;
+  const std::size_t n = p_.real;
+  // In parallel, the smallest step and, among equal ones, the first particle: what the serial
+  // loop finds, for any thread count.
+#pragma omp parallel if (n > 4096)
+  {
+    double dt_min = std::numeric_limits<double>::infinity();
+    std::size_t i_min = n;
+#pragma omp for schedule(static) nowait
+    for (std::size_t i = 0; i < n; ++i) {
+      const double c = p_.wave_speed[i];
+      const double speed =
+          c + norm(p_.velocity[i]) +
+          0.6 * (options_.viscosity_alpha * c + options_.viscosity_beta * p_.compression_rate[i]);
+      const double dt =
+          speed > 0.0 ? p_.smoothing_length[i] / speed : std::numeric_limits<double>::infinity();
+      if (dt < dt_min) dt_min = dt, i_min = i;
+    }
+#pragma omp critical(camouflet_sph_stable_step)
+    if (i_min < n && (dt_min < best.dt || (dt_min == best.dt && i_min < which)))
+      best.dt = dt_min, which = i_min;
   }
   if (p_.real && std::isfinite(best.dt))
     best.reason = fmt::format("particle {} ({}): h/(c+|v|+viscosity)", p_.id[which] + 1,

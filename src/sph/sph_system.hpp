@@ -205,7 +205,7 @@ class SphSystem {
   // write_rates = false only those are stored (kick() after a restart).
   void force_pass(bool write_rates);
   // eta_q, 1/eta_q and the volume m/eta_q of every point (particles, ghosts, coupling points), and
-  // their packed records for the SIMD pair loops (pack_pair_points).
+  // their packed records for the SIMD pair loops (pair_point.hpp), in one pass.
   void prepare_point_factors();
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
 
@@ -267,7 +267,11 @@ class SphSystem {
   // grad W, the viscous and artificial-stress part of the pair force of the last force_pass() per unit mass
   // product, whose work kick() books as heat without evaluating the kernel again.
   std::vector<Vec<D>> pair_dissipation_;
-  // Per-thread sums of the pair-symmetric loops (thread_sums.hpp).
+  // Row blocks of the pair-symmetric loops and their copies of the sums
+  // (thread_sums.hpp), rebuilt with each extraction of the active lists.
+  RowBlocks row_blocks_;
+  std::int64_t row_blocks_extraction_ = -1;  // extraction the blocks belong to
+  void prepare_row_blocks();
   struct ForceSum {
     Vec<D> acceleration{};
     double compression_rate = 0.0;
@@ -277,16 +281,22 @@ class SphSystem {
     double rate = 0.0;    // sum_j weight_j v_ij . grad W
     double L[D][D] = {};  // -sum_j weight_j v_ij (x) grad W
   };
-  ThreadSums<ForceSum> force_sums_;
-  ThreadSums<KinematicSum> kinematic_sums_;
+  BlockSums<ForceSum> force_sums_;
+  BlockSums<KinematicSum> kinematic_sums_;
   // The pair loops on SIMD lanes (pair_lanes.cpp; without the kernel
   // correction): row i of force_pass() and of update_state()'s kinematics,
-  // adding to own (the calling thread's sums), from the packed records.
+  // adding to own (the copy of the sums of the row's block), from the packed records.
   std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by prepare_point_factors()
-  void pack_pair_points();
   void force_row_lanes(std::size_t i, ForceSum* own);
   void kinematics_row_lanes(std::size_t i, KinematicSum* own);
-  ThreadSums<double> heat_sums_;
+  BlockSums<double> heat_sums_;
+  struct alignas(32) HeatPoint {  // what kick()'s heating loop reads of a neighbour
+    Vec<D> velocity_sum;          // m/s, v(n-1/2) + v(n+1/2)
+    double mass;                  // kg
+  };
+  std::vector<HeatPoint> heat_points_;
+  std::vector<double> scratch_eta_, scratch_h_;  // update_state(): eta and h at the end of the step
+  std::vector<Vec<D>> scratch_x_;                // update_state(): x(n+1) while the rates use x(n+1/2)
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far
   std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to

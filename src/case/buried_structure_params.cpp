@@ -69,6 +69,7 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
   }
   if (auto t = root.table("sph")) {
     read(*t, "radius", s.sph_radius, s);
+    read(*t, "depth", s.sph_depth, s);
     t->finish();
   }
   if (auto t = root.table("soil")) {

@@ -1,9 +1,8 @@
-// r-z: a node that crosses the axis must stop the run with an error naming it (issue 8: join-face
-// nodes next to the axis of the buried-structure case ran across it and the run went on for 20 ms
-// with inverted ring elements; nothing caught it because the element centres stayed at r > 0).
+// r-z: a node that crosses the axis must be reported, naming it, the cycle and the time (issue 8:
+// join-face nodes next to the axis of the buried-structure case ran across it and the run went on
+// for 20 ms with inverted ring elements, unreported, because the element centres stayed at r > 0).
+// A warning, as a tangled element (solver_checks.cpp, docs/reliability.md).
 #include <gtest/gtest.h>
-
-#include <string>
 
 #include "common/fem_models.hpp"
 #include "core/error.hpp"
@@ -33,24 +32,24 @@ Model driven_ring(double inward_speed) {
 
 }  // namespace
 
-TEST(SolverDiagnostics, NodeCrossingTheAxisStopsTheRun) {
+TEST(SolverDiagnostics, NodeCrossingTheAxisIsReported) {
   test::use_threads(1);
   const Model model = driven_ring(5000.0);
   Solver<2> solver(model);
-  std::string message;
   double r_before = 0.1;
-  try {
-    for (int k = 0; k < 2000; ++k) {
-      r_before = solver.position()[2 * 1];
+  for (int k = 0; k < 2000 && solver.first_axis_crossing_cycle() < 0; ++k) {
+    r_before = solver.position()[2 * 1];
+    try {
       solver.step();
+    } catch (const NumericalError&) {
+      break;  // the element between it and the axis has collapsed: checked after the crossing
     }
-  } catch (const NumericalError& e) {
-    message = e.what();
   }
-  // Stopped at the step that took node 2 (1-based) past r = 0, naming it and its radius.
+  // Found at the step that took node 2 (1-based) past r = 0, not before.
   EXPECT_GE(r_before, 0.0);
-  EXPECT_NE(message.find("node 2"), std::string::npos) << message;
-  EXPECT_NE(message.find("crossed the axis"), std::string::npos) << message;
+  EXPECT_LT(solver.position()[2 * 1], 0.0);
+  EXPECT_EQ(solver.first_axis_crossing_node(), 2);
+  EXPECT_EQ(solver.first_axis_crossing_cycle(), solver.cycle());
 }
 
 TEST(SolverDiagnostics, NodesOnTheAxisAndMovingOutwardsAreNotAxisCrossings) {
@@ -59,4 +58,5 @@ TEST(SolverDiagnostics, NodesOnTheAxisAndMovingOutwardsAreNotAxisCrossings) {
   Solver<2> solver(model);
   EXPECT_NO_THROW(for (int k = 0; k < 50; ++k) solver.step());
   EXPECT_EQ(solver.position()[0], 0.0);  // the axis node stays exactly on the axis
+  EXPECT_LT(solver.first_axis_crossing_cycle(), 0);
 }

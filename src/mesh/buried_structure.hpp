@@ -64,6 +64,8 @@ struct BuriedStructureSpec {
   // sph_depth allows without a zone as deep as it is wide.
   double sph_radius = 0.0;  // m
   double sph_depth = 0.0;   // m below the ground; 0 = burst_depth + sph_radius
+  // Stiffness-form hourglass coefficient written to the case ([run.hourglass]).
+  double hourglass_coefficient = 0.1;
   // The depth of the SPH zone's bottom face below the ground (m).
   double sph_bottom() const { return sph_depth > 0.0 ? sph_depth : burst_depth + sph_radius; }
   // Reinforcement: an inner and an outer mat in every wall, roof and floor, as

@@ -189,8 +189,8 @@ void write_header(const BuriedStructureSpec& s, const BuriedStructureLayout& L, 
         "# SPH soil zone |x| <= {} m, y <= {} m, from the ground down to {} m ({} particles of {:.4g} "
         "m)\n# joined to the FEM soil;",
         s.charge_mass, s.explosive, L.charge_radius, L.charge_half_size, L.charge_particles, L.charge_spacing,
-        L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_radius, s.sph_bottom(),
-        L.zone_particles, L.zone_spacing);
+        L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_radius, s.sph_bottom(), L.zone_particles,
+        L.zone_spacing);
   else
     fmt::format_to(
         out,

@@ -172,6 +172,9 @@ TEST(BuriedStructure, SphZoneBadInputNamesTheKey) {
   expect_refused(s, "sph.radius");
   s.sph_radius = -1.0;
   expect_refused(s, "sph.radius");
+  s = paper_coarse();
+  s.hourglass_coefficient = 0.0;
+  expect_refused(s, "run.hourglass_coefficient");
   s = test::with_sph_zone_and_rebar(paper_coarse(), 3.5, 0.025, 0.005);
   s.sph_depth = 0.8;  // bottom above the charge's (0.5 + 0.245 m) and two spacings
   expect_refused(s, "sph.depth");
@@ -187,6 +190,9 @@ TEST(BuriedStructure, SphZoneWithItsOwnDepth) {
   BuriedStructureSpec spec = test::with_sph_zone_and_rebar(paper_coarse(), 3.5, 0.025, 0.005);
   spec.sph_depth = 2.0;
   const Model model = read_case_text(buried_structure_case(spec, "test"), "shallow.toml");
+  // The generated case asks for the stiffness-form hourglass control.
+  EXPECT_EQ(model.run.hourglass, HourglassForm::stiffness);
+  EXPECT_DOUBLE_EQ(model.run.hourglass_coefficient, 0.1);
   const test::SphZoneParticles p = test::sph_zone_particles(model);
   ASSERT_GE(p.zone, 0);
   test::verify({"Buried-structure generator: SPH zone (sph.depth) + charge particle volume", "pi R^2 depth",

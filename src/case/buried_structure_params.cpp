@@ -69,6 +69,7 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
   }
   if (auto t = root.table("sph")) {
     read(*t, "radius", s.sph_radius, s);
+    read(*t, "depth", s.sph_depth, s);
     t->finish();
   }
   if (auto t = root.table("soil")) {
@@ -101,6 +102,7 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "field_interval", s.field_interval, s);
     read(*t, "gauge_interval", s.gauge_interval, s);
     read(*t, "cfl", s.cfl, s);
+    read(*t, "hourglass_coefficient", s.hourglass_coefficient, s);
     t->finish();
   }
   if (auto t = root.table("gauges")) {

@@ -175,6 +175,8 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
   compute_normalisation(particles, subs, sub_where, reach);
   // Interface faces: boundary faces of the joined elements with a particle just outside them.
   find_interface_faces(model, elements, particles, bins, reach);
+  update_face_geometry();
+  find_corner_faces(reach);
   if (points_.empty() || faces_.empty()) {
     const Join& join = model.joins.front();
     throw InputError(join.where,
@@ -249,6 +251,7 @@ void SphFemJoin<D>::find_interface_faces(
           }
       if (!faces_particles) continue;
       faces_.push_back(q);
+      face_element_.push_back(static_cast<std::int64_t>(e));
       centres.push_back(cf);
     }
   }
@@ -386,6 +389,7 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
   pairs_.clear();
+  update_face_geometry();
   // r-z: the ring radius of each point's element at the point (an image keeps its element's).
   if (axisymmetric_) {
     ring_.resize(points_.size());
@@ -429,46 +433,51 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
       const Point& pt = points_[j - begin];
       Vec<D> reaction = force * -1.0;
       if (axisymmetric_) {
-        // The r-z ring term. With ring masses the pair force is 2 pi A_i A_j (r_i sigma_i + r_j sigma_j)
-        // . grad W (volume form; A the planar areas): summed over the particles i around the point j,
-        // the part weighted by the particle's ring radius r_i gives, besides the traction, the point's
-        // share f_j of the geometric source sigma_rr / r e_r of div(r sigma) / r, a radial force
-        // 2 pi A_j f_j sigma_rr that does not shrink with the spacing. A particle needs it (its hoop
-        // term -sigma_tt / r balances the source over its whole support); the element does not (its
-        // own nodal forces hold sigma_rr and sigma_tt exactly). Left on the interface nodes it pulled
-        // them towards the axis under compression with an acceleration ~ 1 / (r dx): the nodes next to
-        // the axis crossed it and their elements tangled (issue 8, docs/theory/coupling.md). So the
-        // face takes the radial pair force with that part weighted by the point's own ring radius,
-        // 2 pi r_j A_i A_j (sigma_i + sigma_j) . grad W: a uniform stress then passes no radial force.
-        // The axial component stays -F (axial momentum is conserved pair by pair); the radial one is
-        // no conserved quantity in r-z (hoop stresses exchange it), and its work is booked (settle()).
+        // The r-z ring weights. With ring masses the pair force is 2 pi A_i A_j (r_i sigma_i + r_j sigma_j)
+        // . grad W (volume form; A the planar areas). The face takes it with the point's own ring
+        // radius r_j in both terms, R = -2 pi r_j A_i A_j (sigma_i + sigma_j) . grad W, the force an
+        // element of ring radius r_j transmits (issue 8, docs/theory/coupling.md):
+        // * radially, the part weighted by r_i holds besides the traction the point's share of the
+        //   geometric source sigma_rr / r e_r of div(r sigma) / r, a radial force that does not shrink
+        //   with the spacing. A particle needs it (its hoop term balances it), the element does not
+        //   (its nodal forces hold sigma_rr and sigma_tt exactly); on the face it pulled the nodes
+        //   next to the axis inwards, across it;
+        // * axially, next to the axis the particles around a point (with their mirror images) have
+        //   ring radii |r_i| larger than r_j on average (up to 2x at r_j = dx/2), so the part
+        //   weighted by r_i overloaded the first faces off the axis: the nodes there were driven
+        //   down through the elements below them (5 m by 50 ms in the default buried case).
+        // The particles keep the symmetric pair force (balanced among themselves), so momentum is
+        // conserved pair by pair only away from the axis; the work of the difference R + F is
+        // booked with the face offset work (settle()), so the energy balance still closes.
         const double ratio = ring_[j - begin] / std::max(std::abs(p.position[i][0]), 1e-300);
-        reaction[0] += (1.0 - ratio) * apply<D>(ring_part, grad)[0] * mm;
+        reaction += apply<D>(ring_part, grad) * ((1.0 - ratio) * mm);
       }
-      const Vec<D> v_face = face_velocity(pt);
-      pairs_.push_back({i, j, apply<D>(other, grad) * mm, grad * (mm * pi_ij), dv, force, reaction,
-                        dot(force, p.velocity[j]) + dot(reaction, v_face)});
+      // To the real frame (an image's reaction acts mirrored on its element), then onto the faces.
       for (int m = 0; m < pt.image_count; ++m) {
         const int axis = planes_[pt.planes[static_cast<std::size_t>(m)]].axis;
         reaction[axis] = -reaction[axis];
       }
-      // Equal shares, also in r-z: the one-point element's own nodal forces on a face are equal
-      // (ring volume at the centre x shape gradient), and so are its lumped node masses.
-      for (const std::int64_t n : faces_[pt.face])
-        for (int d = 0; d < D; ++d) f[n * D + d] += reaction[d] / face_nodes;
+      const ReactionParts parts = split_reaction(pt, reaction);
+      double power = dot(force, p.velocity[j]);
+      for (int k = 0; k < parts.count; ++k) {
+        const std::size_t face = parts.face[static_cast<std::size_t>(k)];
+        const Vec<D>& part = parts.force[static_cast<std::size_t>(k)];
+        power += dot(part, face_velocity(face));
+        // Equal shares, also in r-z: the one-point element's own nodal forces on a face are equal
+        // (ring volume at the centre x shape gradient), and so are its lumped node masses.
+        for (const std::int64_t n : faces_[face])
+          for (int d = 0; d < D; ++d) f[n * D + d] += part[d] / face_nodes;
+      }
+      pairs_.push_back({i, j, apply<D>(other, grad) * mm, grad * (mm * pi_ij), dv, force, parts, power});
     }
   }
 }
 
 template <int D>
-Vec<D> SphFemJoin<D>::face_velocity(const Point& point) const {
+Vec<D> SphFemJoin<D>::face_velocity(std::size_t face) const {
   Vec<D> v{};
-  for (const std::int64_t n : faces_[point.face])
+  for (const std::int64_t n : faces_[face])
     for (int d = 0; d < D; ++d) v[d] += v_[n * D + d] / face_nodes;
-  for (int m = 0; m < point.image_count; ++m) {  // the image's face moves as the mirrored face
-    const int axis = planes_[point.planes[static_cast<std::size_t>(m)]].axis;
-    v[axis] = -v[axis];
-  }
   return v;
 }
 
@@ -487,10 +496,12 @@ double SphFemJoin<D>::settle(const sph::SphSystem<D>& particles, double dt,
     // The element-side part of the conservative pair work: no internal energy books it. Nor the
     // work of the pair force on the coupling point (v_j, which the sums see) and of its reaction on
     // the face (v_face, which the FEM moves): F . v_j + R . v_face, with R = -F the offset work
-    // F . (v_j - v_face), in r-z also the work of the ring term taken off the radial reaction.
+    // F . (v_j - v_face), in r-z also the work of the difference of the ring weights (R + F).
     join_work += dot(pair.other, dv) * dt;
-    const double power_new =
-        dot(pair.force, p.velocity[pair.j]) + dot(pair.reaction, face_velocity(points_[pair.j - begin]));
+    double power_new = dot(pair.force, p.velocity[pair.j]);
+    for (int k = 0; k < pair.reaction.count; ++k)
+      power_new += dot(pair.reaction.force[static_cast<std::size_t>(k)],
+                       face_velocity(pair.reaction.face[static_cast<std::size_t>(k)]));
     face_offset_work_ += 0.5 * (pair.power_old + power_new) * dt;
     // Viscous heat: the particle took half (kick); the element behind the coupling point takes
     // the other half, so the viscosity converts kinetic into internal energy without loss.

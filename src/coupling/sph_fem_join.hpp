@@ -21,25 +21,23 @@
 // Conservation: the pair force F_ij of the (symmetric) momentum sum acts on
 // particle i, and -F_ij goes to the FEM at the interface: spread equally over
 // the nodes of the interface face nearest to element j (a boundary face of
-// the joined elements facing the particles). So momentum is conserved pair by
-// pair, and a uniform stress passes the join as a traction on the interface
-// nodes only: the elements inside the band are already in equilibrium through
-// their own FEM forces (spreading the reactions over the band's nodes instead
-// strains the band and drains the wave's energy) (mirror images of elements across the
-// particle symmetry planes and the axis return their reaction mirrored: the
-// plane's reaction). Mass is not exchanged: each element keeps its mass on its
-// nodes. The element enters the sums with the stress its own nodal forces use
-// (sigma - qI), divided by the lattice normalisation n (a lattice transmits n
-// sigma across a plane, the FEM sigma; docs/theory/coupling.md). Energy:
-// particle i books the part of the pair work conjugate to its own stress and
-// half the viscous heat (sph_system.hpp), the element the other half of the
-// viscous heat (settle()); the part conjugate to the element's stress, and the
-// work of the pair forces through the offset between the coupling point and
-// the face that takes its reaction, are the "join work", which the solver adds
-// to the boundary work of the energy balance. It is the join's real energy
-// error (the formulation conserves momentum, not energy): -0.6 to -0.8 % of a
-// 20-cell pulse over two crossings in plane strain, r-z and 3-D
-// (tests/coupling/test_join.cpp).
+// the joined elements facing the particles). Within reach of a corner of the
+// interface (faces of two or three orientations) the reaction is split along
+// the faces' normals, each part to the nearest face of its orientation
+// (join_faces.cpp). So momentum is conserved pair by pair (in r-z the reaction
+// is the pair force with the ring weights of the point, below), and a uniform stress passes the join as a
+// traction on the interface nodes only: the elements inside the band are already in equilibrium through their
+// own FEM forces (spreading the reactions over the band's nodes instead strains the band and drains the
+// wave's energy) (mirror images of elements across the particle symmetry planes and the axis return their
+// reaction mirrored: the plane's reaction). Mass is not exchanged: each element keeps its mass on its nodes.
+// The element enters the sums with the stress its own nodal forces use (sigma - qI), divided by the lattice
+// normalisation n (a lattice transmits n sigma across a plane, the FEM sigma; docs/theory/coupling.md).
+// Energy: particle i books the part of the pair work conjugate to its own stress and half the viscous heat
+// (sph_system.hpp), the element the other half of the viscous heat (settle()); the part conjugate to the
+// element's stress, and the work of the pair forces through the offset between the coupling point and the
+// face that takes its reaction, are the "join work", which the solver adds to the boundary work of the energy
+// balance. It is the join's real energy error (the formulation conserves momentum, not energy): -0.6 to -0.8
+// % of a 20-cell pulse over two crossings in plane strain, r-z and 3-D (tests/coupling/test_join.cpp).
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -78,7 +76,7 @@ class SphFemJoin {
   // The part of the last settle()'s join work done by the pair forces through
   // the offset between a coupling point (the element centre, whose velocity
   // the pair sums see) and the interface face that takes its reaction:
-  // sum (F . v_j + R . v_face) dt, R = -F but for the r-z ring term (J,
+  // sum (F . v_j + R . v_face) dt, R = -F but for the r-z ring weights (J,
   // centred velocities; docs/theory/coupling.md).
   double face_offset_work() const { return face_offset_work_; }
 
@@ -89,11 +87,18 @@ class SphFemJoin {
     double share = 1.0;                    // of the element's area (sub-points of a coarse element)
     std::array<std::uint8_t, 3> planes{};  // images: planes applied in order
     std::uint8_t image_count = 0;
-    double h0 = 0.0;             // m, smoothing length at the reference density
-    double rho0 = 0.0;           // kg/m^3
-    std::size_t face = 0;        // index into faces_: where its reactions go
-    double planar_volume = 0.0;  // m^3 (m^2 per radian x 2 pi in r-z), at set-up
+    double h0 = 0.0;                                 // m, smoothing length at the reference density
+    double rho0 = 0.0;                               // kg/m^3
+    std::size_t face = 0;                            // index into faces_: where its reactions go
+    std::uint32_t corner_begin = 0, corner_end = 0;  // into corner_faces_ (empty: a straight face)
+    double planar_volume = 0.0;                      // m^3 (m^2 per radian x 2 pi in r-z), at set-up
     double normalisation = 1.0;  // n: discrete kernel normalisation around the point (fill())
+  };
+  // Where a pair's reaction goes: up to D parts, each on one interface face (real frame).
+  struct ReactionParts {
+    std::array<Vec<D>, D> force{};      // N
+    std::array<std::size_t, D> face{};  // index into faces_
+    int count = 0;
   };
   struct Pair {
     std::size_t i = 0, j = 0;  // particle, point (index in the particle arrays)
@@ -101,10 +106,19 @@ class SphFemJoin {
     Vec<D> viscous{};          // N, m_i m_j Pi_ij grad W (the viscous force on i is minus this)
     Vec<D> dv_old{};           // m/s, v_i - v_j at n-1/2
     Vec<D> force{};            // N, the whole pair force on i
-    Vec<D> reaction{};         // N, what the face takes (-force, but for the r-z ring term; frame of j)
-    double power_old = 0.0;    // W, force . v_j + reaction . v_face at n-1/2 (v_face mirrored as j)
+    ReactionParts reaction{};  // what the faces take (-force, but for the r-z ring weights)
+    double power_old = 0.0;    // W, force . v_j + sum reaction . v_face at n-1/2
   };
-  Vec<D> face_velocity(const Point& point) const;  // mean of the face nodes' v_, mirrored as the point
+  Vec<D> face_velocity(std::size_t face) const;  // mean of the face nodes' v_ (real frame)
+  // join_faces.cpp: the interface faces' current centres and normals (towards the particles), the
+  // faces of other orientations within reach of each point (corners), and the split of a reaction.
+  void update_face_geometry();
+  void find_corner_faces(double reach);
+  ReactionParts split_reaction(const Point& point, const Vec<D>& reaction) const;
+  std::vector<std::int64_t> face_element_;         // the joined element each face bounds
+  std::vector<Vec<D>> face_centre_, face_normal_;  // m, unit; at the last update_face_geometry()
+  std::vector<std::size_t> corner_faces_;          // per point [corner_begin, corner_end): faces ...
+  std::vector<std::uint8_t> corner_group_;         // ... and their orientation group (0: the point's face's)
   std::vector<double> ring_;                       // m, r-z: ring radius of each point's element there
   double face_offset_work_ = 0.0;
   std::vector<Pair> pairs_;

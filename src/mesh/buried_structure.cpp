@@ -43,6 +43,12 @@ double near_extent(const BuriedStructureSpec& s) {
   return has_sph_zone(s) ? std::max(s.near_radius, s.sph_radius + 2.0 * s.size_near) : s.near_radius;
 }
 
+// The same below the charge centre (m): down to two cells under the zone's bottom face.
+double near_extent_below(const BuriedStructureSpec& s) {
+  return has_sph_zone(s) ? std::max(s.near_radius, s.sph_bottom() - s.burst_depth + 2.0 * s.size_near)
+                         : s.near_radius;
+}
+
 Fill fill_of(const BuriedStructureSpec& s, double half, double r, double y) {
   // With an SPH zone the charge is particles: the FEM grid is soil there (cut by the zone).
   if (!has_sph_zone(s) && r < half && std::abs(y - s.burst_depth) < half) return Fill::charge;
@@ -83,6 +89,10 @@ void check(const BuriedStructureSpec& s, double a) {
   if (!(s.field_interval >= 0.0)) fail("run.field_interval", "must be >= 0");
   if (!(s.gauge_interval >= 0.0)) fail("run.gauge_interval", "must be >= 0");
   if (!(s.cfl > 0.0 && s.cfl <= 1.0)) fail("run.cfl", fmt::format("must lie in (0, 1], got {}", s.cfl));
+  if (!(s.hourglass_coefficient > 0.0 && s.hourglass_coefficient <= 0.5))
+    fail("run.hourglass_coefficient",
+         fmt::format("must lie in (0, 0.5] (stiffness-form hourglass control), got {}",
+                     s.hourglass_coefficient));
   if (s.gauge_count < 2 || s.gauge_count > 100) fail("gauges.count", "must be a whole number from 2 to 100");
   if (2.0 * s.wall_thickness >= std::min(s.box_length, s.box_height))
     fail("structure.wall_thickness", fmt::format("{} m walls leave no room inside a {} m x {} m box",
@@ -127,9 +137,19 @@ void check(const BuriedStructureSpec& s, double a) {
            fmt::format("the SPH zone (r <= {} m) crosses the structure at r = {} m: keep at least "
                        "two structure cells ({} m) of FEM soil between them",
                        s.sph_radius, s.standoff, 2.0 * s.size_structure));
-    if (s.burst_depth + s.sph_radius + 2.0 * s.size_near >= s.domain_depth)
-      fail("domain.depth", fmt::format("{} m does not contain the SPH zone (down to {} m)", s.domain_depth,
-                                       s.burst_depth + s.sph_radius));
+    if (!(s.sph_depth >= 0.0) || !std::isfinite(s.sph_depth))
+      fail("sph.depth",
+           fmt::format("must be >= 0 (m below the ground; 0 = charge depth + radius), got {}", s.sph_depth));
+    if (s.sph_depth > 0.0 && s.sph_depth < s.burst_depth + a + 2.0 * s.size_near)
+      fail("sph.depth",
+           fmt::format("the SPH zone's bottom at {} m must lie below the charge (down to {:.3f} m) "
+                       "with two particle spacings ({} m each) of soil under it",
+                       s.sph_depth, s.burst_depth + a, s.size_near));
+    if (s.sph_bottom() + 2.0 * s.size_near >= s.domain_depth)
+      fail(s.sph_depth > 0.0 ? "sph.depth" : "domain.depth",
+           fmt::format("the domain ({} m deep) does not contain the SPH zone (down to {} m) and two cells "
+                       "under it",
+                       s.domain_depth, s.sph_bottom()));
   }
 }
 
@@ -144,7 +164,7 @@ Grid make_grid(const BuriedStructureSpec& s, double half) {
   std::vector<double> y_lines{y0, y0 + t, y1 - t, y1};
   if (has_sph_zone(s)) {
     r_lines.push_back(s.sph_radius);
-    y_lines.push_back(s.burst_depth + s.sph_radius);
+    y_lines.push_back(s.sph_bottom());
   } else {
     r_lines.push_back(half);
     y_lines.push_back(s.burst_depth - half);
@@ -154,7 +174,7 @@ Grid make_grid(const BuriedStructureSpec& s, double half) {
                     {{0.0, near, s.size_near}, {r0 - margin, r1 + margin, s.size_structure}}, s.size_soil,
                     s.size_far);
   g.depth = layout_axis(0.0, s.domain_depth, y_lines,
-                        {{s.burst_depth - near, s.burst_depth + near, s.size_near},
+                        {{s.burst_depth - near, s.burst_depth + near_extent_below(s), s.size_near},
                          {y0 - margin, y1 + margin, s.size_structure}},
                         s.size_soil, s.size_far);
   return g;
@@ -205,7 +225,7 @@ void layout_sph_zone(const BuriedStructureSpec& s, BuriedStructureLayout& L) {
   }
   L.zone_spacing = s.size_near;
   ParticleFillSpec zone;
-  zone.region.min = {0.0, -(s.burst_depth + s.sph_radius), 0.0};
+  zone.region.min = {0.0, -s.sph_bottom(), 0.0};
   zone.region.max = {s.sph_radius, 0.0, 0.0};
   zone.spacing = s.size_near;
   charge.spacing = L.charge_spacing;
@@ -305,9 +325,9 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "# face {} m from the axis, roof top {} m deep; domain {} m x {} m; {} blocks, {} elements before\n"
         "# the zone's hole is cut.\n#\n",
         s.charge_mass, s.explosive, L.charge_radius, L.charge_particles, L.charge_spacing,
-        L.charge_model_mass, s.burst_depth, s.sph_radius, s.burst_depth + s.sph_radius, L.zone_particles,
-        L.zone_spacing, s.box_length, s.box_height, s.wall_thickness, s.standoff, s.top_depth,
-        s.domain_radius, s.domain_depth, L.block_count, L.element_count);
+        L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_bottom(), L.zone_particles, L.zone_spacing,
+        s.box_length, s.box_height, s.wall_thickness, s.standoff, s.top_depth, s.domain_radius,
+        s.domain_depth, L.block_count, L.element_count);
   else
     fmt::format_to(
         out,
@@ -394,7 +414,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "[[parts]]\nname = \"near_field\"\nkind = \"sph\"\nmaterial = \"soil\"\njoin = true\n"
         "exclude = [\"charge\"]\n"
         "fill = {{ shape = \"box\", min = [0.0, {:.9g}], max = [{:.9g}, 0.0], spacing = {:.9g} }}\n\n",
-        -(s.burst_depth + s.sph_radius), s.sph_radius, L.zone_spacing);
+        -s.sph_bottom(), s.sph_radius, L.zone_spacing);
     // The three-phase soil reports its unloading (water-solid) sound speed,
     // several times the speed of the compaction wave, so the linear term
     // alpha c mu of the particle viscosity at the usual alpha = 1 damps the
@@ -466,6 +486,14 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
   auto out = std::back_inserter(b);
   fmt::format_to(out, "title = \"{}\"\n\n[run]\ngeometry = \"{}\"\nend_time = {}  # s\ncfl = {}\n\n", s.title,
                  geometry, s.end_time, s.cfl);
+  // Stiffness-form hourglass control: under the charge the soil flows plastically for tens of
+  // milliseconds, and the viscous form (resisting hourglass velocities only) let the elements next
+  // to the axis drift into a sawtooth that grew until nodes crossed the axis (coarse 29 ms, default
+  // 65 ms; issue 8). The stiffness form holds it (docs/buried-structure.md, "Hourglass control").
+  fmt::format_to(out,
+                 "[run.hourglass]  # stiffness form: the soil under the charge flows for tens of ms\n"
+                 "form = \"stiffness\"\ncoefficient = {}\n\n",
+                 s.hourglass_coefficient);
   fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
                  s.gauge_interval);
   fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,

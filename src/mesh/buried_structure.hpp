@@ -56,11 +56,18 @@ struct BuriedStructureSpec {
   double size_soil = 0.25;
   double size_far = 1.0;
   // SPH zone (Wang et al. 2005, Fig. 6): the soil in r <= sph_radius, from the
-  // ground down to burst_depth + sph_radius, is SPH particles of spacing
-  // mesh.near joined to the FEM soil around, and the charge is a sphere (an
-  // r-z disc) of SPH explosive particles. 0: no SPH zone (charge and near
-  // field as FEM elements).
+  // ground down to sph_depth (0: burst_depth + sph_radius), is SPH particles of
+  // spacing mesh.near joined to the FEM soil around, and the charge is a
+  // sphere (an r-z disc) of SPH explosive particles. 0: no SPH zone (charge
+  // and near field as FEM elements). A crater is wide and shallow: the zone
+  // should hold it (the paper's point of the SPH zone, section 5.2), which
+  // sph_depth allows without a zone as deep as it is wide.
   double sph_radius = 0.0;  // m
+  double sph_depth = 0.0;   // m below the ground; 0 = burst_depth + sph_radius
+  // Stiffness-form hourglass coefficient written to the case ([run.hourglass]).
+  double hourglass_coefficient = 0.1;
+  // The depth of the SPH zone's bottom face below the ground (m).
+  double sph_bottom() const { return sph_depth > 0.0 ? sph_depth : burst_depth + sph_radius; }
   // Reinforcement: an inner and an outer mat in every wall, roof and floor, as
   // embedded bars (fem/embedded_bars.hpp) at `rebar_cover` (m, clear distance
   // from the face to the bar line) with steel area per metre of circumference

@@ -44,6 +44,12 @@ double near_extent(const BuriedStructureSpec& s) {
   return has_sph_zone(s) ? std::max(s.near_radius, s.sph_radius + 2.0 * s.size_near) : s.near_radius;
 }
 
+// The same below the charge centre (m): down to two cells under the zone's bottom face.
+double near_extent_below(const BuriedStructureSpec& s) {
+  return has_sph_zone(s) ? std::max(s.near_radius, s.sph_bottom() - s.burst_depth + 2.0 * s.size_near)
+                         : s.near_radius;
+}
+
 // Half side (m) of the cube of the charge's volume, (2h)^3 = 4/3 pi a^3: the
 // 3-D charge is this cube (FEM elements or SPH particles), half of it in the model.
 double cube_half_side(double a) {
@@ -94,7 +100,7 @@ Grid make_grid(const BuriedStructureSpec& s, double h) {
     const double R = s.sph_radius;
     x_lines.insert(x_lines.end(), {-R, R});
     y_lines.push_back(R);
-    d_lines.push_back(s.burst_depth + R);
+    d_lines.push_back(s.sph_bottom());
   } else {
     x_lines.insert(x_lines.end(), {-h, h});
     y_lines.push_back(h);
@@ -108,7 +114,7 @@ Grid make_grid(const BuriedStructureSpec& s, double h) {
                     {{-near, near, s.size_near}, {-margin, yw + margin, s.size_structure}}, s.size_soil,
                     s.size_far);
   g.depth = layout_axis(0.0, s.domain_depth, d_lines,
-                        {{s.burst_depth - near, s.burst_depth + near, s.size_near},
+                        {{s.burst_depth - near, s.burst_depth + near_extent_below(s), s.size_near},
                          {d0 - margin, d1 + margin, s.size_structure}},
                         s.size_soil, s.size_far);
   return g;
@@ -138,7 +144,7 @@ ParticleFillSpec charge_fill(const BuriedStructureSpec& s, double h) {
 
 ParticleFillSpec zone_fill(const BuriedStructureSpec& s, const ParticleFillSpec& charge) {
   ParticleFillSpec f;
-  f.region.min = {-s.sph_radius, 0.0, -(s.burst_depth + s.sph_radius)};
+  f.region.min = {-s.sph_radius, 0.0, -s.sph_bottom()};
   f.region.max = {s.sph_radius, s.sph_radius, 0.0};
   f.spacing = s.size_near;
   f.exclude.push_back(charge.region);
@@ -183,8 +189,8 @@ void write_header(const BuriedStructureSpec& s, const BuriedStructureLayout& L, 
         "# SPH soil zone |x| <= {} m, y <= {} m, from the ground down to {} m ({} particles of {:.4g} "
         "m)\n# joined to the FEM soil;",
         s.charge_mass, s.explosive, L.charge_radius, L.charge_half_size, L.charge_particles, L.charge_spacing,
-        L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_radius, s.burst_depth + s.sph_radius,
-        L.zone_particles, L.zone_spacing);
+        L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_radius, s.sph_bottom(), L.zone_particles,
+        L.zone_spacing);
   else
     fmt::format_to(
         out,

@@ -120,8 +120,8 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
       std::vector<sph::MirrorPlane> planes = particle_planes();
       if (mode_ == GeometryMode::axisymmetric)
         planes.insert(planes.begin(), sph::MirrorPlane{0, 0.0, sph::PlaneKind::symmetry});
-      join_ = std::make_unique<SphFemJoin<D>>(model, elements_, position_.data(), velocity_.data(), *particles_,
-                                              std::move(planes));
+      join_ = std::make_unique<SphFemJoin<D>>(model, elements_, position_.data(), velocity_.data(),
+                                              *particles_, std::move(planes));
     }
     particles_->compute_accelerations();
   }
@@ -190,7 +190,8 @@ void Solver<D>::step() {
     // Energies at t_n, then x(n+1) = x(n) + v(n+1/2) dt, each node checked
     // finite and inside the domain box: one pass over the nodes.
     account_energy_and_advance_positions();
-    check_particles();  // the particles' half of check_nodes_and_particles (solver_checks.cpp)
+    check_particles();       // the particles' half of check_nodes_and_particles (solver_checks.cpp)
+    check_axis_crossings();  // r-z: a node across the axis is reported (a warning)
     element_kinematics();    // V, rho at t_(n+1); D, W, q at mid-step (SPH kinematics beside it)
     update_materials();      // EOS + strength + damage, one call per material batch
     update_bars();           // embedded bars: uniaxial-stress material update
@@ -224,10 +225,11 @@ void Solver<D>::add_forces() {
   node_forces_zeroed_ = false;
   hourglass_stored_ = elements_.add_internal_forces(position_.data(), velocity_.data(), force_.data(),
                                                     f_hourglass, hourglass_, dt_);
-  if (particles_) particles_->compute_accelerations();  // SPH sums at t_n
+  if (particles_) particles_->compute_accelerations();          // SPH sums at t_n
   if (join_) join_->add_reactions(*particles_, force_.data());  // reactions on the joined nodes
   if (particles_ && !contact_.empty())
-    contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(), 0.5 * (dt_ + dt_next_));
+    contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(),
+                                    0.5 * (dt_ + dt_next_));
 }
 
 template <int D>
@@ -410,8 +412,8 @@ void Solver<D>::gather_element_state() {
       elements_.wave_speed[e] = pts->wave_speed(p);
       const double energy = elements_.mass[e] * pts->specific_energy[p];
       internal += energy;
-      if (!std::isfinite(s.xx + s.yy + s.zz + s.xy + s.yz + s.zx) || !std::isfinite(elements_.wave_speed[e]) ||
-          !std::isfinite(energy))
+      if (!std::isfinite(s.xx + s.yy + s.zz + s.xy + s.yz + s.zx) ||
+          !std::isfinite(elements_.wave_speed[e]) || !std::isfinite(energy))
         bad = std::min(bad, k);
     }
   }

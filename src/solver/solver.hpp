@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "boundary/boundary_conditions.hpp"
-#include "fem/embedded_bars.hpp"
+#include "core/state_visitor.hpp"
 #include "coupling/sliding_contact.hpp"
 #include "coupling/sph_fem_join.hpp"
 #include "coupling/transmitting_boundary.hpp"
-#include "core/state_visitor.hpp"
+#include "fem/embedded_bars.hpp"
 #include "fem/fem_elements.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
@@ -50,6 +50,10 @@ class Solver {
   // fatal (docs/reliability.md).
   std::int64_t first_tangled_element() const { return first_tangled_element_; }
   std::int64_t first_tangled_cycle() const { return first_tangled_cycle_; }
+  // r-z: the first node found at r < 0 after moving inwards (crossed the axis), 1-based, and the
+  // cycle; 0 and -1 while none did. Reported on stderr like a tangled element (solver_checks.cpp).
+  std::int64_t first_axis_crossing_node() const { return first_axis_node_; }
+  std::int64_t first_axis_crossing_cycle() const { return first_axis_cycle_; }
   const TimeStepLimit& time_step_limit() const { return limit_; }
   const EnergyBalance& energy() const { return energy_; }
   // Where the energy sits and what the boundary work is made of (energy.csv).
@@ -73,7 +77,7 @@ class Solver {
   const std::vector<double>& position() const { return position_; }
   const std::vector<double>& velocity() const { return velocity_; }
   std::vector<double>& velocity() {  // tests impose initial fields
-    nodes_checked_cycle_ = -1;           // so the next step checks them
+    nodes_checked_cycle_ = -1;       // so the next step checks them
     return velocity_;
   }
   const std::vector<double>& displacement() const { return displacement_; }
@@ -109,6 +113,7 @@ class Solver {
   void check_nodes_and_particles() const;
   void check_particles() const;
   [[noreturn]] void fail_node(std::int64_t n) const;  // 0-based; non-finite or outside the box
+  void check_axis_crossings();                        // r-z: nodes moved to r < 0, reported (a warning)
   std::string describe(EntityKind kind, std::int64_t id) const;
   std::vector<sph::MirrorPlane> particle_planes() const;
 
@@ -123,13 +128,17 @@ class Solver {
 
   FemElements<D> elements_;
   std::unique_ptr<sph::SphSystem<D>> particles_;
-  std::unique_ptr<SphFemJoin<D>> join_;  // SPH-FEM join (coupling/); in place: it registers itself with particles_
-  double join_power_ = 0.0;              // W, pair work across the join that no internal energy books
-  SlidingContact<D> contact_;            // particles against FEM faces (coupling/)
-  double contact_power_ = 0.0;           // W, power of the contact forces
+  std::unique_ptr<SphFemJoin<D>>
+      join_;                    // SPH-FEM join (coupling/); in place: it registers itself with particles_
+  double join_power_ = 0.0;     // W, pair work across the join that no internal energy books
+  SlidingContact<D> contact_;   // particles against FEM faces (coupling/)
+  double contact_power_ = 0.0;  // W, power of the contact forces
   std::int64_t first_tangled_element_ = 0, first_tangled_cycle_ = -1;  // see first_tangled_element()
   std::int64_t last_tangled_element_ = 0;
-  int tangled_reports_ = 0;  // warnings printed (at most 20)
+  int tangled_reports_ = 0;                                   // warnings printed (at most 20)
+  std::int64_t first_axis_node_ = 0, first_axis_cycle_ = -1;  // see first_axis_crossing_node()
+  std::vector<char> axis_reported_;                           // per node: its crossing was reported
+  int axis_reports_ = 0;
   std::vector<MaterialPoints> batches_;  // one per Model::materials entry
   BoundaryConditions<D> boundaries_;
   TransmittingBoundary<D> transmitting_;  // Lysmer-Kuhlemeyer dashpots (coupling/)

@@ -172,6 +172,48 @@ TEST(BuriedStructure, SphZoneBadInputNamesTheKey) {
   expect_refused(s, "sph.radius");
   s.sph_radius = -1.0;
   expect_refused(s, "sph.radius");
+  s = paper_coarse();
+  s.hourglass_coefficient = 0.0;
+  expect_refused(s, "run.hourglass_coefficient");
+  s = test::with_sph_zone_and_rebar(paper_coarse(), 3.5, 0.025, 0.005);
+  s.sph_depth = 0.8;  // bottom above the charge's (0.5 + 0.245 m) and two spacings
+  expect_refused(s, "sph.depth");
+  s.sph_depth = -2.0;
+  expect_refused(s, "sph.depth");
+  s.sph_depth = s.domain_depth;  // the zone reaches the bottom edge
+  expect_refused(s, "sph.depth");
+}
+
+// A zone wider than deep (sph.depth): the crater is wide and shallow (the wang2005 cases use
+// r <= 3.5 m, down to 2 m). The particles fill exactly pi R^2 depth, and no element is left in it.
+TEST(BuriedStructure, SphZoneWithItsOwnDepth) {
+  BuriedStructureSpec spec = test::with_sph_zone_and_rebar(paper_coarse(), 3.5, 0.025, 0.005);
+  spec.sph_depth = 2.0;
+  const Model model = read_case_text(buried_structure_case(spec, "test"), "shallow.toml");
+  // The generated case asks for the stiffness-form hourglass control.
+  EXPECT_EQ(model.run.hourglass, HourglassForm::stiffness);
+  EXPECT_DOUBLE_EQ(model.run.hourglass_coefficient, 0.1);
+  const test::SphZoneParticles p = test::sph_zone_particles(model);
+  ASSERT_GE(p.zone, 0);
+  test::verify({"Buried-structure generator: SPH zone (sph.depth) + charge particle volume", "pi R^2 depth",
+                std::numbers::pi * 3.5 * 3.5 * 2.0, p.charge_volume + p.zone_volume, 0.01, true, "m^3"});
+  std::size_t in_zone = 0;
+  for (std::size_t e = 0; e < model.mesh.element_count(); ++e) {
+    double r = 0.0, z = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const auto n = static_cast<std::size_t>(model.mesh.connectivity[4 * e + static_cast<std::size_t>(k)]);
+      r += 0.25 * model.mesh.coordinates[2 * n];
+      z += 0.25 * model.mesh.coordinates[2 * n + 1];
+    }
+    if (r < 3.5 && z > -2.0) ++in_zone;
+  }
+  EXPECT_EQ(in_zone, 0u);
+  // The parameter file's key, and its line when refused.
+  const auto r = test::generate_from("generate-bad", "shallow.params.toml",
+                                     "[charge]\nmass = 100.0\n[sph]\nradius = 3.5\ndepth = 0.6\n");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("shallow.params.toml:5"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("key 'sph.depth'"), std::string::npos) << r.output;
 }
 
 // Through `camouflet generate`: status 2 and one line naming file, line and key.

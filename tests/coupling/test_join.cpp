@@ -69,8 +69,17 @@ TEST(SphFemJoin, PlanePulsePlaneStrain) {
 TEST(SphFemJoin, PlanePulseAxisymmetric) {
   // The column lies along the axis, between the axis and a roller at r = 4 cells: the images of
   // the coupling points across the roller carry their element's ring weight (sph_fem_join.cpp).
+  // Energy bound 1.5 %, not issue 7's 1 %: since issue 8 the faces take the pair reactions with the
+  // coupling point's own ring radius, R = -2 pi r_j A_i A_j (sigma_i + sigma_j) . grad W, which next
+  // to the axis (and to a roller) is not minus the particles' pair force, so the join gives up
+  // momentum and energy there (measured -1.07 % over the two crossings, -0.67 % with R = -F). The
+  // whole of this 4-cell column lies in that band; R = -F drove the face nodes next to the axis
+  // through the elements below them in the buried-structure case (docs/theory/coupling.md).
+  Limits limits;
+  limits.energy = 0.015;
+  limits.energy_reference = "0 (issue 7: 1 %; 1.5 % for this column within 4 cells of the axis, issue 8)";
   check_crossing("Joined SPH zone, P-pulse, axisymmetric",
-                 test::join_crossing<2>(GeometryMode::axisymmetric, 5e-3, 5e-3, with_switch()), {});
+                 test::join_crossing<2>(GeometryMode::axisymmetric, 5e-3, 5e-3, with_switch()), limits);
 }
 
 TEST(SphFemJoin, PlanePulseAxisymmetricAnnulus) {

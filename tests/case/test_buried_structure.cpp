@@ -52,6 +52,21 @@ double volume_of(const Model& m, const std::string& part_prefix) {
   return v;
 }
 
+// Elements whose centre lies in the SPH zone r < radius, z > -depth (the hole must hold none).
+std::size_t elements_in_zone(const Model& model, double radius, double depth) {
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < model.mesh.element_count(); ++e) {
+    double r = 0.0, z = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const auto n = static_cast<std::size_t>(model.mesh.connectivity[4 * e + static_cast<std::size_t>(k)]);
+      r += 0.25 * model.mesh.coordinates[2 * n];
+      z += 0.25 * model.mesh.coordinates[2 * n + 1];
+    }
+    if (r < radius && z > -depth) ++count;
+  }
+  return count;
+}
+
 TEST(BuriedStructure, PaperCaseReadsAsOneFusedMesh) {
   const BuriedStructureSpec spec = paper_coarse();
   const std::string text = buried_structure_case(spec, "test");
@@ -146,15 +161,7 @@ TEST(BuriedStructure, SphZoneAndRebarCase) {
   test::verify({"Buried-structure generator: SPH zone + charge particle volume", "pi R^2 (d + R)", zone_box,
                 charge_volume + zone_volume, 0.01, true, "m^3"});
   // The hole: no soil element left with its centre in the zone, and no concrete cut.
-  for (std::size_t e = 0; e < model.mesh.element_count(); ++e) {
-    double r = 0.0, z = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const auto n = static_cast<std::size_t>(model.mesh.connectivity[4 * e + static_cast<std::size_t>(k)]);
-      r += 0.25 * model.mesh.coordinates[2 * n];
-      z += 0.25 * model.mesh.coordinates[2 * n + 1];
-    }
-    EXPECT_FALSE(r < 1.5 && z > -2.0) << "element " << e << " at (" << r << ", " << z << ") in the SPH zone";
-  }
+  EXPECT_EQ(elements_in_zone(model, 1.5, 2.0), 0u);
   EXPECT_NEAR(volume_of(model, "concrete"),
               volume_of(read_case_text(buried_structure_case(paper_coarse(), "t"), "plain.toml"), "concrete"),
               1e-9);
@@ -197,17 +204,7 @@ TEST(BuriedStructure, SphZoneWithItsOwnDepth) {
   ASSERT_GE(p.zone, 0);
   test::verify({"Buried-structure generator: SPH zone (sph.depth) + charge particle volume", "pi R^2 depth",
                 std::numbers::pi * 3.5 * 3.5 * 2.0, p.charge_volume + p.zone_volume, 0.01, true, "m^3"});
-  std::size_t in_zone = 0;
-  for (std::size_t e = 0; e < model.mesh.element_count(); ++e) {
-    double r = 0.0, z = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const auto n = static_cast<std::size_t>(model.mesh.connectivity[4 * e + static_cast<std::size_t>(k)]);
-      r += 0.25 * model.mesh.coordinates[2 * n];
-      z += 0.25 * model.mesh.coordinates[2 * n + 1];
-    }
-    if (r < 3.5 && z > -2.0) ++in_zone;
-  }
-  EXPECT_EQ(in_zone, 0u);
+  EXPECT_EQ(elements_in_zone(model, 3.5, 2.0), 0u);
   // The parameter file's key, and its line when refused.
   const auto r = test::generate_from("generate-bad", "shallow.params.toml",
                                      "[charge]\nmass = 100.0\n[sph]\nradius = 3.5\ndepth = 0.6\n");

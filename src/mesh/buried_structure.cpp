@@ -36,19 +36,6 @@ bool has_sph_zone(const BuriedStructureSpec& s) {
   return s.sph_radius > 0.0;
 }
 
-// Extent of the uniform near-field mesh around the charge centre (m): it
-// covers the SPH zone and two cells beyond, so the elements beside the hole
-// have the particles' size (join spacing ratio 1).
-double near_extent(const BuriedStructureSpec& s) {
-  return has_sph_zone(s) ? std::max(s.near_radius, s.sph_radius + 2.0 * s.size_near) : s.near_radius;
-}
-
-// The same below the charge centre (m): down to two cells under the zone's bottom face.
-double near_extent_below(const BuriedStructureSpec& s) {
-  return has_sph_zone(s) ? std::max(s.near_radius, s.sph_bottom() - s.burst_depth + 2.0 * s.size_near)
-                         : s.near_radius;
-}
-
 Fill fill_of(const BuriedStructureSpec& s, double half, double r, double y) {
   // With an SPH zone the charge is particles: the FEM grid is soil there (cut by the zone).
   if (!has_sph_zone(s) && r < half && std::abs(y - s.burst_depth) < half) return Fill::charge;
@@ -158,7 +145,7 @@ Grid make_grid(const BuriedStructureSpec& s, double half) {
   const double r0 = s.standoff, r1 = s.standoff + s.box_length, t = s.wall_thickness;
   const double y0 = s.top_depth, y1 = s.top_depth + s.box_height;
   Grid g;
-  const double near = near_extent(s);
+  const double near = s.near_extent();
   // Block lines: the charge square (FEM charge) or the SPH zone's edges (the hole).
   std::vector<double> r_lines{r0, r0 + t, r1 - t, r1};
   std::vector<double> y_lines{y0, y0 + t, y1 - t, y1};
@@ -174,7 +161,7 @@ Grid make_grid(const BuriedStructureSpec& s, double half) {
                     {{0.0, near, s.size_near}, {r0 - margin, r1 + margin, s.size_structure}}, s.size_soil,
                     s.size_far);
   g.depth = layout_axis(0.0, s.domain_depth, y_lines,
-                        {{s.burst_depth - near, s.burst_depth + near_extent_below(s), s.size_near},
+                        {{s.burst_depth - near, s.burst_depth + s.near_extent_below(), s.size_near},
                          {y0 - margin, y1 + margin, s.size_structure}},
                         s.size_soil, s.size_far);
   return g;

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 // Buried-structure case generator (issue 8): from a handful of physical
 // parameters (charge, depth of burst, standoff, box, soil, domain, mesh sizes)
 // it writes a complete 2-D axisymmetric case file of the paper's example
@@ -68,6 +69,16 @@ struct BuriedStructureSpec {
   double hourglass_coefficient = 0.1;
   // The depth of the SPH zone's bottom face below the ground (m).
   double sph_bottom() const { return sph_depth > 0.0 ? sph_depth : burst_depth + sph_radius; }
+  // Extent of the uniform near-field mesh around the charge centre (m), sideways and below: it
+  // covers the SPH zone and two cells beyond, so the elements beside the hole have the particles'
+  // size (join spacing ratio 1).
+  double near_extent() const {
+    return sph_radius > 0.0 ? std::max(near_radius, sph_radius + 2.0 * size_near) : near_radius;
+  }
+  double near_extent_below() const {
+    return sph_radius > 0.0 ? std::max(near_radius, sph_bottom() - burst_depth + 2.0 * size_near)
+                            : near_radius;
+  }
   // Reinforcement: an inner and an outer mat in every wall, roof and floor, as
   // embedded bars (fem/embedded_bars.hpp) at `rebar_cover` (m, clear distance
   // from the face to the bar line) with steel area per metre of circumference

@@ -39,17 +39,6 @@ double side_of(const BuriedStructureSpec& s) {
   return s.domain_side > 0.0 ? s.domain_side : s.domain_radius;
 }
 
-// Uniform near-field extent (m), as in r-z: the SPH zone and two cells beyond.
-double near_extent(const BuriedStructureSpec& s) {
-  return has_sph_zone(s) ? std::max(s.near_radius, s.sph_radius + 2.0 * s.size_near) : s.near_radius;
-}
-
-// The same below the charge centre (m): down to two cells under the zone's bottom face.
-double near_extent_below(const BuriedStructureSpec& s) {
-  return has_sph_zone(s) ? std::max(s.near_radius, s.sph_bottom() - s.burst_depth + 2.0 * s.size_near)
-                         : s.near_radius;
-}
-
 // Half side (m) of the cube of the charge's volume, (2h)^3 = 4/3 pi a^3: the
 // 3-D charge is this cube (FEM elements or SPH particles), half of it in the model.
 double cube_half_side(double a) {
@@ -84,9 +73,9 @@ void check_3d(const BuriedStructureSpec& s, double a) {
   if (0.5 * s.box_width + s.size_structure >= side)
     fail("domain.side",
          fmt::format("{} m does not contain the structure (half width {} m)", side, 0.5 * s.box_width));
-  if (near_extent(s) + s.size_near >= side)
+  if (s.near_extent() + s.size_near >= side)
     fail("domain.side", fmt::format("{} m does not contain the near-field zone around the charge ({} m)",
-                                    side, near_extent(s)));
+                                    side, s.near_extent()));
   if (a + s.size_near >= side) fail("domain.side", fmt::format("{} m does not contain the charge", side));
 }
 
@@ -94,7 +83,7 @@ Grid make_grid(const BuriedStructureSpec& s, double h) {
   const double margin = 2.0 * s.size_structure;
   const double x0 = s.standoff, x1 = s.standoff + s.box_length, yw = 0.5 * s.box_width;
   const double d0 = s.top_depth, d1 = s.top_depth + s.box_height, t = s.wall_thickness;
-  const double near = near_extent(s);
+  const double near = s.near_extent();
   std::vector<double> x_lines{x0, x0 + t, x1 - t, x1}, y_lines{yw - t, yw}, d_lines{d0, d0 + t, d1 - t, d1};
   if (has_sph_zone(s)) {
     const double R = s.sph_radius;
@@ -114,7 +103,7 @@ Grid make_grid(const BuriedStructureSpec& s, double h) {
                     {{-near, near, s.size_near}, {-margin, yw + margin, s.size_structure}}, s.size_soil,
                     s.size_far);
   g.depth = layout_axis(0.0, s.domain_depth, d_lines,
-                        {{s.burst_depth - near, s.burst_depth + near_extent_below(s), s.size_near},
+                        {{s.burst_depth - near, s.burst_depth + s.near_extent_below(), s.size_near},
                          {d0 - margin, d1 + margin, s.size_structure}},
                         s.size_soil, s.size_far);
   return g;

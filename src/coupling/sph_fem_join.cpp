@@ -389,7 +389,7 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
   pairs_.clear();
-  update_face_geometry();
+  if (!corner_faces_.empty()) update_face_geometry();  // read only by split_reaction at corners
   // r-z: the ring radius of each point's element at the point (an image keeps its element's).
   if (axisymmetric_) {
     ring_.resize(points_.size());

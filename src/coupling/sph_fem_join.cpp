@@ -107,6 +107,7 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
         continue;
       Point p = candidates[c];
       p.planes[p.image_count++] = static_cast<std::uint8_t>(k);
+      if (axisymmetric_ && k == 0) p.across_axis = !p.across_axis;  // planes_[0] is the axis
       candidates.push_back(p);
       where.push_back(sph::mirror_position(where[c], planes_[k]));
     }
@@ -373,6 +374,12 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
         options_.artificial_stress
             ? sph::artificial_stress<D>(sigma, options_.artificial_stress_epsilon, w / (eta * eta * n))
             : SymTensor{};
+    if (pt.across_axis && options_.volume_form) {
+      // As the particles' images (SphSystem::refresh_ghosts): across the axis the ring weight
+      // 2 pi r is negative, so that r sigma continues linearly through r = 0.
+      p.stress_term[j] = p.stress_term[j] * -1.0;
+      p.tensile_term[j] = p.tensile_term[j] * -1.0;
+    }
     p.wave_speed[j] = el.wave_speed[e];
     // The element has no switch of its own (its shocks are the FEM's q): the least alpha.
     p.viscosity_alpha[j] =
@@ -423,10 +430,15 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
       // The stress part weighted by the particle's ring radius r_i (r-z, below): m_i m_j / eta_j in
       // the volume form (own: 2 pi r_i A_i A_j sigma_i), in the density form other (m_i A_j sigma_j / rho_j).
       const SymTensor ring_part = options_.volume_form ? own : other;
+      // The point's own terms as the sums see them: an image across the axis carries them with its
+      // signed ring weight (fill()); the element behind it transmits them with its own, positive one.
+      SymTensor signed_part = other;
       if (options_.artificial_stress) {
         const double dp = hij / options_.smoothing_factor;
         const double fr = kernel.value(r, hij) / kernel.value(dp, hij);
-        other += (p.tensile_term[i] + p.tensile_term[j]) * std::pow(fr, options_.artificial_stress_power);
+        const double fn = std::pow(fr, options_.artificial_stress_power);
+        other += (p.tensile_term[i] + p.tensile_term[j]) * fn;
+        signed_part += p.tensile_term[j] * fn;
       }
       const double mm = p.mass[i] * p.mass[j];
       const Vec<D> force = (apply<D>(own + other, grad) - grad * pi_ij) * mm;  // on particle i
@@ -451,6 +463,10 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
         // booked with the face offset work (settle()), so the energy balance still closes.
         const double ratio = ring_[j - begin] / std::max(std::abs(p.position[i][0]), 1e-300);
         reaction += apply<D>(ring_part, grad) * ((1.0 - ratio) * mm);
+        // An image across the axis: the face takes the element's terms with its positive ring
+        // weight, R = -2 pi r_j A_i A_j (sigma_i + sigma_j) . grad W as for any point; the particle
+        // felt them with the image's negative one (the difference is booked like the one above).
+        if (pt.across_axis && options_.volume_form) reaction += apply<D>(signed_part, grad) * (2.0 * mm);
       }
       // To the real frame (an image's reaction acts mirrored on its element), then onto the faces.
       for (int m = 0; m < pt.image_count; ++m) {

@@ -87,9 +87,10 @@ class SphFemJoin {
     double share = 1.0;                    // of the element's area (sub-points of a coarse element)
     std::array<std::uint8_t, 3> planes{};  // images: planes applied in order
     std::uint8_t image_count = 0;
-    double h0 = 0.0;                                 // m, smoothing length at the reference density
-    double rho0 = 0.0;                               // kg/m^3
-    std::size_t face = 0;                            // index into faces_: where its reactions go
+    bool across_axis = false;  // r-z: an image across the axis (its ring weight is signed, fill())
+    double h0 = 0.0;           // m, smoothing length at the reference density
+    double rho0 = 0.0;         // kg/m^3
+    std::size_t face = 0;      // index into faces_: where its reactions go
     std::uint32_t corner_begin = 0, corner_end = 0;  // into corner_faces_ (empty: a straight face)
     double planar_volume = 0.0;                      // m^3 (m^2 per radian x 2 pi in r-z), at set-up
     double normalisation = 1.0;  // n: discrete kernel normalisation around the point (fill())

@@ -114,6 +114,11 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     Parameters sph_block = model.sph;
     const sph::SphOptions options = sph::read_sph_options(sph_block);
     sph_block.finish();
+    if (mode_ == GeometryMode::axisymmetric && !options.volume_form)
+      fmt::print(stderr,
+                 "warning: [sph] volume_form = false in r-z: the particle columns next to the axis feel a "
+                 "stress divergence up to ~1.4x too large (mirror images with |r| ring weights; "
+                 "docs/theory/sph.md, \"The first columns\")\n");
     particles_ = std::make_unique<sph::SphSystem<D>>(model, options, particle_planes());
     if (!model.joins.empty()) {
       // The same planes as the particles' mirrors, axis first (SphSystem's order).

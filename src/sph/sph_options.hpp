@@ -50,7 +50,11 @@ struct SphOptions {
   double conductivity = 0.0;
   // Momentum/continuity pair (sph_system.hpp): true = volume form (Colagrossi &
   // Landrini 2003), robust at density jumps; false = classic density form
-  // sigma_i/rho_i^2 + sigma_j/rho_j^2 (Monaghan 1992).
+  // sigma_i/rho_i^2 + sigma_j/rho_j^2 (Monaghan 1992). In r-z only the volume
+  // form gives the images across the axis their signed ring weight (the first
+  // particle columns then feel the right stress divergence); the density form
+  // keeps |r| there (its r_j weight multiplies sigma_i, which the images cannot
+  // carry), and the solver warns (docs/theory/sph.md, "The first columns").
   bool volume_form = true;
   // XSPH velocity smoothing for the position update (Monaghan 1989); 0 = off.
   double xsph = 0.0;

@@ -163,6 +163,9 @@ void SphSystem<D>::gather_material_state() {
 template <int D>
 void SphSystem<D>::refresh_ghosts() {
   const std::size_t n = p_.real;
+  // planes_[0] is the axis. The density form (volume_form = false) keeps |r| (sph_options.hpp).
+  const bool axis_plane = mode_ == GeometryMode::axisymmetric && options_.volume_form;
+  image_sign_.resize(ghosts_.size());
   for (std::size_t g = 0; g < ghosts_.size(); ++g) {
     const std::size_t k = n + g, s = ghosts_[g].source;
     const MirrorPlane& plane = planes_[ghosts_[g].plane];
@@ -177,6 +180,17 @@ void SphSystem<D>::refresh_ghosts() {
     p_.viscosity_alpha[k] = p_.viscosity_alpha[s];
     p_.stress_term[k] = mirror_tensor(p_.stress_term[s], plane.axis);
     p_.tensile_term[k] = mirror_tensor(p_.tensile_term[s], plane.axis);
+    image_sign_[g] = s >= n ? image_sign_[s - n] : 1;  // a ghost of a ghost inherits its source's side
+    if (axis_plane && ghosts_[g].plane == 0) {
+      image_sign_[g] = static_cast<signed char>(-image_sign_[g]);
+      // An image across the axis stands at r < 0: its ring weight w = 2 pi r is odd there,
+      // so that r sigma continues smoothly (linearly) across the axis and the kernel sums of
+      // div(r sigma) / r_i stay accurate in the first columns. With w = 2 pi |r| the images
+      // made r sigma kinked at r = 0: the first column felt 1.41 x the vertical pressure
+      // gradient and an outward push of ~0.5 p / r in uniform pressure (test_axis_gradient.cpp).
+      p_.stress_term[k] = p_.stress_term[k] * -1.0;
+      p_.tensile_term[k] = p_.tensile_term[k] * -1.0;
+    }
     p_.correction[k] = mirror_tensor(p_.correction[s], plane.axis);
   }
   if (external_count_ > 0 && external_begin_ >= n && n > 0 &&

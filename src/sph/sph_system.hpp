@@ -199,6 +199,9 @@ class SphSystem {
     return apply<D>((p_.correction[i] + p_.correction[j]) * 0.5, grad);
   }
   void refresh_ghosts();
+  // r-z: books as heat the work of the images' signed ring weights (refresh_ghosts), which
+  // the conservative pairing with |r| would not do; after the kick, with its mean velocities.
+  void book_axis_image_work(double dt);
   void gather_material_state();
   // The momentum sum (compute_accelerations) over the current lists at x(n),
   // storing per list entry the pair terms kick() books as heat; with
@@ -214,6 +217,7 @@ class SphSystem {
   Kernel<D> kernel_;
   std::vector<MirrorPlane> planes_;
   std::vector<Ghost> ghosts_;
+  std::vector<signed char> image_sign_;  // per ghost: -1 across the axis (an odd number of times), else +1
   NeighbourSearch<D> search_;
   bool correction_current_ = false;
   double skin_ = 0.0;

@@ -144,6 +144,10 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
   const auto bars = column_peaks(out / "bars.csv");
+  // Updated 22 Nov 2026, session 6 (issue 8): the particles' (and coupling points') images across
+  // the axis carry signed ring weights, their work booked as heat (docs/theory/sph.md, "The first
+  // columns"): B1 2.31435e8 -> 2.39420e8 Pa (+3.5 %), A1 3.30001e8 -> 3.00300e8 Pa (-9 %), t9
+  // 8.84514e7 -> 8.52641e7 Pa (-3.6 %); B2, t2 and the rebar strain moved less than 3 %.
   // Updated 22 Nov 2026, session 5 (issue 8): the join-face reactions with the point's ring radius
   // in both components and split along the face normals at the zone's corner (B2 lies at the
   // corner: 1.6255e7 -> 8.63e6 Pa with these alone), then the stiffness-form hourglass control
@@ -154,10 +158,10 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   // 19.2332 m/s, rebar 2.39349e-3 -> 2.70126e-3; B1 and A1 moved less than 3 %.
   verify_peaks("Reduced buried-structure case with SPH zone: peak ", "regression (SPH zone) ",
                {
-                   {"group_B B1 pressure", 2.31435e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B1 pressure", 2.39420e8, "Pa", b.at("B1.pressure")},
                    {"group_B B2 pressure", 3.61734e7, "Pa", b.at("B2.pressure")},
-                   {"group_A A1 pressure", 3.30001e8, "Pa", a.at("A1.pressure")},
-                   {"structure t9 stress_xx", 8.84514e7, "Pa", s.at("t9.stress_xx")},
+                   {"group_A A1 pressure", 3.00300e8, "Pa", a.at("A1.pressure")},
+                   {"structure t9 stress_xx", 8.52641e7, "Pa", s.at("t9.stress_xx")},
                    {"structure t2 velocity_x", 20.3614, "m/s", s.at("t2.velocity_x")},
                    {"rebar front_out.1 axial_strain", 4.74049e-3, "-", bars.at("front_out.1.axial_strain")},
                });

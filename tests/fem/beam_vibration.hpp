@@ -69,19 +69,32 @@ struct StripVibration {
 // plane elasticity whose modes are sin(k x)); initial velocity v_y =
 // amplitude sin(pi x / L), the first mode's shape. The period comes from the
 // zero crossings of the mid-span, mid-thickness node's v_y (linear interpolation).
-inline StripVibration vibrate_strip(const StripSpec& s) {
+template <int D = 2>
+StripVibration vibrate_strip(const StripSpec& s) {
   use_threads(1);
   const ElasticConstants c = strip_material();
   const int along = static_cast<int>(std::lround(s.length / s.thickness * s.cells_through));
-  Model model = block_model(GeometryMode::plane_strain,
-                            {{"strip",
-                              0,
-                              {0.0, -0.5 * s.thickness, 0.0},
-                              {s.length, s.thickness, 0.0},
-                              {along, s.cells_through, 1}}},
-                            c);
-  model.boundaries.push_back(velocity("strip.xmin", 1, 0.0));
-  model.boundaries.push_back(velocity("strip.xmax", 1, 0.0));
+  // 3-D: one hex across a width of one cell, held between two symmetry planes
+  // (plane strain), thickness along z.
+  const double cell = s.thickness / s.cells_through;
+  const BlockSpec block = D == 2 ? BlockSpec{"strip",
+                                             0,
+                                             {0.0, -0.5 * s.thickness, 0.0},
+                                             {s.length, s.thickness, 0.0},
+                                             {along, s.cells_through, 1}}
+                                 : BlockSpec{"strip",
+                                             0,
+                                             {0.0, 0.0, -0.5 * s.thickness},
+                                             {s.length, cell, s.thickness},
+                                             {along, 1, s.cells_through}};
+  Model model = block_model(D == 2 ? GeometryMode::plane_strain : GeometryMode::three_d, {block}, c);
+  model.mesh.nodes_per_element = D == 2 ? 4 : 8;
+  model.boundaries.push_back(velocity("strip.xmin", D - 1, 0.0));
+  model.boundaries.push_back(velocity("strip.xmax", D - 1, 0.0));
+  if (D == 3) {
+    model.boundaries.push_back(symmetry("strip.ymin", {0, 1, 0}));
+    model.boundaries.push_back(symmetry("strip.ymax", {0, 1, 0}));
+  }
   model.run.hourglass = s.hourglass.form;
   model.run.hourglass_coefficient = s.hourglass.coefficient;
   const double omega = timoshenko_first_frequency(s, c);
@@ -89,14 +102,14 @@ inline StripVibration vibrate_strip(const StripSpec& s) {
   out.reference_period = 2.0 * std::numbers::pi / omega;
   model.run.end_time = s.periods * out.reference_period;
 
-  Solver<2> solver(model);
+  Solver<D> solver(model);
   const auto& x0 = model.mesh.coordinates;
   std::vector<double>& v = solver.velocity();
   std::size_t probe = 0;
   double best = 1e30;
   for (std::size_t n = 0; n < solver.node_count(); ++n) {
-    const double x = x0[2 * n], y = x0[2 * n + 1];
-    v[2 * n + 1] = s.amplitude * std::sin(std::numbers::pi * x / s.length);
+    const double x = x0[D * n], y = x0[D * n + D - 1];
+    v[D * n + D - 1] = s.amplitude * std::sin(std::numbers::pi * x / s.length);
     const double d = std::hypot(x - 0.5 * s.length, y);
     if (d < best) best = d, probe = n;
   }
@@ -104,12 +117,12 @@ inline StripVibration vibrate_strip(const StripSpec& s) {
   // amplitude on the other side (hysteresis: high-frequency ripple about
   // zero does not add crossings); its time is that of the last sign change.
   std::vector<double> crossings;
-  double previous_v = solver.velocity()[2 * probe + 1], previous_t = solver.time();
+  double previous_v = solver.velocity()[D * probe + D - 1], previous_t = solver.time();
   double last_zero = 0.0, sign = 1.0;
   double first_peak = 0.0, last_peak = 0.0, peak = 0.0;
   while (solver.time() < model.run.end_time) {
     solver.step();
-    const double vy = solver.velocity()[2 * probe + 1], t = solver.time();
+    const double vy = solver.velocity()[D * probe + D - 1], t = solver.time();
     peak = std::max(peak, std::abs(vy));
     if ((previous_v > 0.0) != (vy > 0.0))
       last_zero = previous_t + (t - previous_t) * previous_v / (previous_v - vy);

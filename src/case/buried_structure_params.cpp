@@ -24,6 +24,19 @@ void read(TomlReader& table, const std::string& key, std::string& value, BuriedS
   spec.where[table.key_path(key)] = table.where(key);
 }
 
+// `hourglass = { form = ..., coefficient = ... }` of [soil] or [structure].
+void read_hourglass(TomlReader& table, std::string& form, double& coefficient, BuriedStructureSpec& spec) {
+  auto h = table.table("hourglass");
+  if (!h) return;
+  spec.where[table.key_path("hourglass")] = table.where("hourglass");
+  if (h->has("form")) {
+    form = h->choice("form", {"stiffness", "viscous"}, "");
+    spec.where[h->key_path("form")] = h->where("form");
+  }
+  read(*h, "coefficient", coefficient, spec);
+  h->finish();
+}
+
 }  // namespace
 
 BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
@@ -55,6 +68,7 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "top_depth", s.top_depth, s);
     read(*t, "width", s.box_width, s);
     read(*t, "concrete", s.concrete, s);
+    read_hourglass(*t, s.structure_hourglass, s.structure_hourglass_coefficient, s);
     t->finish();
   }
   if (auto t = root.table("rebar")) {
@@ -75,6 +89,7 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
   if (auto t = root.table("soil")) {
     read(*t, "preset", s.soil, s);
     read(*t, "wave_speed", s.soil_wave_speed, s);
+    read_hourglass(*t, s.soil_hourglass, s.soil_hourglass_coefficient, s);
     t->finish();
   }
   if (auto t = root.table("domain")) {

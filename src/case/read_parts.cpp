@@ -197,6 +197,22 @@ int part_named(const Model& model, const std::string& name, PartKind kind, const
                               : fmt::format("no part '{}' is defined; did you mean '{}'?", name, guess));
 }
 
+// `hourglass = { form = ..., coefficient = ... }` of a FEM part: its own
+// hourglass control in place of [run.hourglass] (docs/case-format.md).
+HourglassControl read_part_hourglass(TomlReader& h) {
+  HourglassControl control;
+  const std::string form = h.choice("form", {"viscous", "stiffness"}, "");
+  control.form = form == "stiffness" ? HourglassForm::stiffness : HourglassForm::viscous;
+  if (h.has("coefficient")) {
+    control.coefficient = h.number("coefficient");
+    // A part asking for control gets some: 0 is "none", which a part does not choose.
+    if (!(control.coefficient > 0.0 && control.coefficient <= 0.5))
+      h.fail("coefficient", fmt::format("must lie in (0, 0.5], got {}", control.coefficient));
+  }
+  h.finish();
+  return control;
+}
+
 // Fills the SPH parts in the order they are declared; a joined part first cuts
 // its hole from the FEM mesh and records the join (coupling/joined_zone.hpp).
 void fill_sph_parts(std::vector<PendingFill>& pending, Model& model) {
@@ -237,6 +253,11 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     const std::string kind = p.choice("kind", {"fem", "sph"}, "fem");
     part.kind = kind == "sph" ? PartKind::sph : PartKind::fem;
     part.initial_velocity = p.vector("initial_velocity", dim, {0, 0, 0});
+    if (part.kind == PartKind::fem) {
+      if (auto h = p.table("hourglass")) part.hourglass = read_part_hourglass(*h);
+    } else if (p.has("hourglass")) {
+      p.fail("hourglass", "only a FEM part has hourglass control (SPH particles have no hourglass modes)");
+    }
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);
     if (part.kind == PartKind::sph) {

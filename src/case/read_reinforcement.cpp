@@ -51,6 +51,7 @@ void read_rebar_wall(TomlReader& part, const BlockSpec& block, Model& model) {
     steel.name = fmt::format("{}.rebar{}", block.name, k);
     steel.material = material_index(model, l, "material");
     steel.initial_velocity = concrete.initial_velocity;
+    steel.hourglass = concrete.hourglass;  // the layers are elements of the wall
     steel.where = l.where();
     layer.part = static_cast<int>(model.parts.size());
     model.parts.push_back(steel);

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <type_traits>
 
 #include "core/error.hpp"
@@ -219,8 +220,10 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
   constexpr int N = nodes;
   constexpr int W = pack_width;
   const bool axi = axisymmetric_;
-  const bool viscous_hg = hg.form == HourglassForm::viscous && hg.coefficient > 0.0;
-  const bool stiff_hg = hg.form == HourglassForm::stiffness && hg.coefficient > 0.0;
+  // Without per-element control, `hg` for every element: kappa 0 for "none".
+  const bool own_hg = !hourglass_coefficient.empty();
+  const double hg_kappa = hg.form == HourglassForm::none ? 0.0 : hg.coefficient;
+  const bool hg_stiff = hg.form == HourglassForm::stiffness;
   const std::size_t ne = size();
 
   // One pack of elements e0 .. e0 + count - 1 (element_pack.hpp): forces
@@ -231,6 +234,17 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     bool any = false;
     for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
     if (!any) return 0.0;  // an eroded element carries no force (issue 6)
+    // The lanes' hourglass control: kappa and form per lane (the same
+    // arithmetic per lane whichever forms share the pack).
+    Pack kappa = broadcast(hg_kappa);
+    bool stiff[W];
+    bool viscous_hg = false, stiff_hg = false;
+    for (int l = 0; l < W; ++l) {
+      const std::size_t e = e0 + static_cast<std::size_t>(l < count ? l : count - 1);
+      if (own_hg) kappa[l] = hourglass_coefficient[e];
+      stiff[l] = own_hg ? hourglass_stiffness[e] != 0 : hg_stiff;
+      if (l < count && kappa[l] > 0.0) (stiff[l] ? stiff_hg : viscous_hg) = true;
+    }
     const std::int64_t* conn = &connectivity[e0 * N];
     PackedNodes<D> xe, ve, b, fe;
     if (viscous_hg || stiff_hg)
@@ -283,8 +297,18 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
       // l = V / largest face, from the last kinematics (same geometry).
       const Pack rho = load_pack(density.data(), e0, count), c = load_pack(wave_speed.data(), e0, count),
                  le = load_pack(length.data(), e0, count);
-      Pack coef = viscous_hg ? 0.25 * hg.coefficient * rho * c * (D == 2 ? le : le * le)
-                             : 0.25 * hg.coefficient * rho * c * c * (D == 2 ? broadcast(1.0) : le);
+      Pack coef;
+      if (!stiff_hg) {
+        coef = 0.25 * kappa * rho * c * (D == 2 ? le : le * le);
+      } else if (!viscous_hg) {
+        coef = 0.25 * kappa * rho * c * c * (D == 2 ? broadcast(1.0) : le);
+      } else {  // both forms in this pack (parts meet in it)
+        Pack stiff_lanes{};
+        for (int l = 0; l < W; ++l) stiff_lanes[l] = stiff[l] ? 1.0 : 0.0;
+        const Pack viscous_coef = 0.25 * kappa * rho * c * (D == 2 ? le : le * le);
+        const Pack stiff_coef = 0.25 * kappa * rho * c * c * (D == 2 ? broadcast(1.0) : le);
+        coef = stiff_lanes > 0.0 ? stiff_coef : viscous_coef;
+      }
       coef *= w;
       // All mode amplitudes first, then each force component as one sum over
       // the modes (in mode order, as before), held in registers rather than
@@ -297,6 +321,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
           Pack amplitude = rate;
           if (stiff_hg) {
             for (int l = 0; l < count; ++l) {
+              if (!stiff[l]) continue;
               double& hd = hourglass_displacement[(e0 + static_cast<std::size_t>(l)) * modes * D +
                                                   static_cast<std::size_t>(m * D + i)];
               if (!eroded[e0 + static_cast<std::size_t>(l)]) hd += rate[l] * dt_previous;
@@ -318,15 +343,18 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     // Lane by lane, node by node: the node's D force values and, when asked
     // for, its D hourglass values at one computed address (each array sees its
     // additions in the same order as before).
-    const bool scatter_hourglass = fh_out && (viscous_hg || stiff_hg);
+    // Only the viscous form's forces go to fh_out: the stiffness form's
+    // energy is held as a state (the return value), not integrated as work.
+    const bool scatter_hourglass = fh_out && viscous_hg;
     for (int l = 0; l < count; ++l) {
       if (eroded[e0 + static_cast<std::size_t>(l)]) continue;
       const std::int64_t* c = conn + l * N;
+      const bool scatter_lane = scatter_hourglass && !stiff[l];
       for (int a = 0; a < N; ++a) {
         const std::int64_t k = c[a] * D;
         double* fk = f_out + k;
         for (int i = 0; i < D; ++i) fk[i] += fe[i][a][l];
-        if (scatter_hourglass) {
+        if (scatter_lane) {
           double* hk = fh_out + k;
           for (int i = 0; i < D; ++i) hk[i] += fh[i][a][l];
         }
@@ -379,6 +407,28 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     }
   }
   return stored;
+}
+
+template <int D>
+void FemElements<D>::set_hourglass(const std::vector<HourglassControl>& per_element) {
+  if (per_element.size() != size())
+    throw std::logic_error(
+        fmt::format("set_hourglass: {} controls for {} elements", per_element.size(), size()));
+  hourglass_coefficient.resize(size());
+  hourglass_stiffness.resize(size());
+  for (std::size_t e = 0; e < size(); ++e) {
+    const HourglassControl& h = per_element[e];
+    hourglass_coefficient[e] = h.form == HourglassForm::none ? 0.0 : h.coefficient;
+    hourglass_stiffness[e] = h.form == HourglassForm::stiffness ? 1 : 0;
+  }
+}
+
+template <int D>
+bool FemElements<D>::any_viscous_hourglass(const HourglassControl& hg) const {
+  if (hourglass_coefficient.empty()) return hg.form == HourglassForm::viscous && hg.coefficient > 0.0;
+  for (std::size_t e = 0; e < size(); ++e)
+    if (hourglass_coefficient[e] > 0.0 && !hourglass_stiffness[e]) return true;
+  return false;
 }
 
 template <int D>

@@ -15,11 +15,6 @@
 
 namespace camouflet {
 
-struct HourglassControl {
-  HourglassForm form = HourglassForm::viscous;
-  double coefficient = 0.1;  // dimensionless (FB 1981 kappa)
-};
-
 struct ViscosityControl {
   double quadratic = 1.5;  // c_quadratic
   double linear = 0.06;    // c_linear
@@ -52,13 +47,21 @@ class FemElements {
   bool axisymmetric() const { return axisymmetric_; }
 
   // f (n*D) += internal forces at the positions x (t_n), stresses `stress`
-  // less q, and hourglass resistance from the velocities v (t_{n-1/2}).
-  // dt_previous advances the stiffness-form hourglass displacements. The
-  // hourglass forces alone are also added to f_hourglass (n*D) when it is
-  // not null, so the solver can charge the viscous form's work time-centred.
-  // Returns the energy held by the stiffness form at t_n (J; 0 otherwise).
+  // less q, and hourglass resistance from the velocities v (t_{n-1/2}), with
+  // each element's own control when set_hourglass gave them one, else `hg`
+  // for all. dt_previous advances the stiffness-form hourglass displacements.
+  // The viscous-form hourglass forces alone are also added to f_hourglass
+  // (n*D) when it is not null, so the solver can charge their work
+  // time-centred. Returns the energy held by the stiffness form at t_n (J).
   double add_internal_forces(const double* x, const double* v, double* f, double* f_hourglass,
                              const HourglassControl& hg, double dt_previous);
+
+  // Per-element hourglass control (a part's own, docs/case-format.md): one
+  // entry per element; afterwards add_internal_forces ignores its `hg`.
+  void set_hourglass(const std::vector<HourglassControl>& per_element);
+  // Whether any element has the viscous form with a positive coefficient
+  // (the solver then keeps the hourglass forces for the work integral).
+  bool any_viscous_hourglass(const HourglassControl& hg) const;
 
   // From x (t_{n+1}) and v (t_{n+1/2}): new volume and density, strain rate
   // and spin at mid-step, q, characteristic length and speed; written into
@@ -84,6 +87,9 @@ class FemElements {
   std::vector<double> speed;                   // m/s, largest node speed of the element
   std::vector<double> hourglass_displacement;  // m, e * modes * D: stiffness-form generalised modes
   std::vector<char> eroded;                    // 1: eroded (no forces, no kinematics; issue 6)
+  // Own hourglass control (set_hourglass; empty: the `hg` of add_internal_forces for all).
+  std::vector<double> hourglass_coefficient;  // FB 1981 kappa; 0 = no control
+  std::vector<char> hourglass_stiffness;      // 1: stiffness form, 0: viscous
 
  private:
   bool axisymmetric_ = false;

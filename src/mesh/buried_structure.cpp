@@ -80,6 +80,17 @@ void check(const BuriedStructureSpec& s, double a) {
     fail("run.hourglass_coefficient",
          fmt::format("must lie in (0, 0.5] (stiffness-form hourglass control), got {}",
                      s.hourglass_coefficient));
+  for (const char* member : {"soil", "structure"}) {
+    const bool soil = std::string(member) == "soil";
+    const std::string& form = soil ? s.soil_hourglass : s.structure_hourglass;
+    const double c = soil ? s.soil_hourglass_coefficient : s.structure_hourglass_coefficient;
+    const std::string key = std::string(member) + ".hourglass";
+    if (form != "stiffness" && form != "viscous")
+      fail(key + ".form", fmt::format("must be \"stiffness\" or \"viscous\", got \"{}\"", form));
+    // 0 stands for "not given" (run.hourglass_coefficient); given, it must be a coefficient.
+    if ((c != 0.0 || s.where.count(key + ".coefficient")) && !(c > 0.0 && c <= 0.5))
+      fail(key + ".coefficient", fmt::format("must lie in (0, 0.5], got {}", c));
+  }
   if (s.gauge_count < 2 || s.gauge_count > 100) fail("gauges.count", "must be a whole number from 2 to 100");
   if (2.0 * s.wall_thickness >= std::min(s.box_length, s.box_height))
     fail("structure.wall_thickness", fmt::format("{} m walls leave no room inside a {} m x {} m box",
@@ -376,10 +387,10 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
       const std::string name = fmt::format("{}_r{}_z{}", material, i, j);
       // Grading along z runs from the block's deep edge up: the inverse of the depth grading.
       fmt::format_to(out,
-                     "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\nblock = {{ origin = [{:.9g}, {:.9g}], "
+                     "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\n{}block = {{ origin = [{:.9g}, {:.9g}], "
                      "size = [{:.9g}, {:.9g}], cells = [{}, {}], grading = [{:.9g}, {:.9g}] }}\n\n",
-                     name, material, ri.a, -yj.b + 0.0, ri.b - ri.a, yj.b - yj.a, ri.cells, yj.cells,
-                     ri.grading, 1.0 / yj.grading);
+                     name, material, buried_detail::part_hourglass(s, material), ri.a, -yj.b + 0.0,
+                     ri.b - ri.a, yj.b - yj.a, ri.cells, yj.cells, ri.grading, 1.0 / yj.grading);
       if (i == 0) fmt::format_to(bout, "[[boundary]]\ntype = \"axis\"\nset = \"{}.xmin\"\n\n", name);
       if (i + 1 == g.r.size())
         fmt::format_to(bout, "[[boundary]]\ntype = \"{}\"\nset = \"{}.xmax\"\n\n", far_type, name);
@@ -477,16 +488,27 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
   // milliseconds, and the viscous form (resisting hourglass velocities only) let the elements next
   // to the axis drift into a sawtooth that grew until nodes crossed the axis (coarse 29 ms, default
   // 65 ms; issue 8). The stiffness form holds it (docs/buried-structure.md, "Hourglass control").
-  fmt::format_to(out,
-                 "[run.hourglass]  # stiffness form: the soil under the charge flows for tens of ms\n"
-                 "form = \"stiffness\"\ncoefficient = {}\n\n",
-                 s.hourglass_coefficient);
+  // The soil's control is the run's; the box's parts carry their own when it differs
+  // (part_hourglass below).
+  fmt::format_to(out, "[run.hourglass]  # {}\nform = \"{}\"\ncoefficient = {}\n\n",
+                 s.soil_hourglass == "stiffness"
+                     ? "stiffness form: the soil under the charge flows for tens of ms"
+                     : "the soil's (soil.hourglass)",
+                 s.soil_hourglass, s.soil_hourglass_kappa());
   fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
                  s.gauge_interval);
   fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,
                  s.explosive);
   fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
   if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
+}
+
+std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material) {
+  if (material != "concrete") return "";
+  if (s.structure_hourglass == s.soil_hourglass && s.structure_hourglass_kappa() == s.soil_hourglass_kappa())
+    return "";
+  return fmt::format("hourglass = {{ form = \"{}\", coefficient = {} }}  # structure.hourglass\n",
+                     s.structure_hourglass, s.structure_hourglass_kappa());
 }
 
 std::vector<StructureTarget> structure_targets(const BuriedStructureSpec& s) {

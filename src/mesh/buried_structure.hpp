@@ -65,8 +65,19 @@ struct BuriedStructureSpec {
   // sph_depth allows without a zone as deep as it is wide.
   double sph_radius = 0.0;  // m
   double sph_depth = 0.0;   // m below the ground; 0 = burst_depth + sph_radius
-  // Stiffness-form hourglass coefficient written to the case ([run.hourglass]).
+  // Hourglass control of the soil (and an FEM charge) and of the box: form
+  // "stiffness" or "viscous", coefficient 0 = `hourglass_coefficient`. The
+  // soil's is the case's [run.hourglass]; the box's parts carry their own
+  // when it differs (docs/buried-structure.md, "Hourglass form in the structure").
   double hourglass_coefficient = 0.1;
+  std::string soil_hourglass = "stiffness", structure_hourglass = "stiffness";
+  double soil_hourglass_coefficient = 0.0, structure_hourglass_coefficient = 0.0;
+  double soil_hourglass_kappa() const {
+    return soil_hourglass_coefficient > 0.0 ? soil_hourglass_coefficient : hourglass_coefficient;
+  }
+  double structure_hourglass_kappa() const {
+    return structure_hourglass_coefficient > 0.0 ? structure_hourglass_coefficient : hourglass_coefficient;
+  }
   // The depth of the SPH zone's bottom face below the ground (m).
   double sph_bottom() const { return sph_depth > 0.0 ? sph_depth : burst_depth + sph_radius; }
   // Extent of the uniform near-field mesh around the charge centre (m), sideways and below: it

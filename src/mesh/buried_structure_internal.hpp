@@ -35,6 +35,11 @@ void write_soil_gauges(const BuriedStructureSpec& s, bool three_d, std::string& 
 // geometries but for [run] geometry (`geometry`: "axisymmetric" or "3d").
 void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry, std::string& b);
 
+// `hourglass = { ... }` line of a part of `material` ("concrete", "soil",
+// "charge"): the box's own control where it differs from the soil's (the
+// run's); empty otherwise.
+std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material);
+
 // Keys of one geometry given in the other (structure.width, domain.side in
 // r-z) or missing (structure.width in 3-D): InputError naming the key.
 void check_geometry_keys(const BuriedStructureSpec& s);

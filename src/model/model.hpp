@@ -25,6 +25,13 @@ inline int dimension_of(GeometryMode mode) { return mode == GeometryMode::three_
 
 enum class HourglassForm { viscous, stiffness, none };
 
+// Flanagan-Belytschko hourglass control of the one-point elements: the run's
+// default ([run.hourglass]) or a part's own (`hourglass` of a [[parts]] entry).
+struct HourglassControl {
+  HourglassForm form = HourglassForm::viscous;
+  double coefficient = 0.1;  // dimensionless (FB 1981 kappa)
+};
+
 struct RunControl {
   double end_time = 0.0;     // s
   double cfl = 0.6;          // time step = cfl * min(length / (c + |v|))
@@ -98,6 +105,8 @@ struct Part {
   int material = -1;                        // index into Model::materials
   std::array<double, 3> initial_velocity{};  // m/s
   SourceLocation where;
+  // The part's own hourglass control (FEM parts); none: the run's [run.hourglass].
+  std::optional<HourglassControl> hourglass;
 };
 
 struct NamedMaterial {
@@ -195,6 +204,11 @@ struct Model {
   }
 
   int dimension() const { return dimension_of(run.mode); }
+  // The hourglass control of the elements of part `part`: its own, else the run's.
+  HourglassControl hourglass_of(std::size_t part) const {
+    const auto& own = parts[part].hourglass;
+    return own ? *own : HourglassControl{run.hourglass, run.hourglass_coefficient};
+  }
 };
 
 }  // namespace camouflet

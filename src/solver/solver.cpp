@@ -97,9 +97,17 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   setup_reinforcement();  // embedded bars add their mass at their hosts' velocity
 
   hourglass_ = {model.run.hourglass, model.run.hourglass_coefficient};
+  // Parts with their own hourglass control: every element gets its part's.
+  if (std::any_of(model.parts.begin(), model.parts.end(),
+                  [](const Part& p) { return p.hourglass.has_value(); })) {
+    std::vector<HourglassControl> per_element(ne);
+    for (std::size_t e = 0; e < ne; ++e)
+      per_element[e] = model.hourglass_of(static_cast<std::size_t>(mesh.element_part[e]));
+    elements_.set_hourglass(per_element);
+  }
   // The viscous form's work is charged from its nodal forces; the stiffness
   // form holds its energy as a state (1/2 k q^2), like the internal energy.
-  if (hourglass_.form == HourglassForm::viscous && hourglass_.coefficient > 0.0) {
+  if (elements_.any_viscous_hourglass(hourglass_)) {
     hourglass_force_.assign(nn * D, 0.0);
     hourglass_force_previous_.assign(nn * D, 0.0);
   }

@@ -17,69 +17,11 @@
 #include "case/case_reader.hpp"
 #include "common/fem_models.hpp"
 #include "common/verification.hpp"
+#include "near_field_case.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
 namespace {
-
-std::string near_field_case(const std::string& form) {
-  return fmt::format(R"(title = "joined near field, {0} hourglass form"
-[run]
-geometry = "axisymmetric"
-end_time = 0.03
-cfl = 0.6
-
-[run.hourglass]
-form = "{0}"
-coefficient = 0.1
-
-[materials.soil]
-preset = "sandy_clay_wang2005_seismic"
-
-[materials.charge]
-preset = "tnt_wang2005"
-
-[[parts]]
-name = "soil"
-material = "soil"
-block = {{ origin = [0, -3.5], size = [2.5, 3.5], cells = [50, 70] }}
-
-[[parts]]
-name = "charge"
-kind = "sph"
-material = "charge"
-fill = {{ shape = "sphere", centre = [0.0, -0.5], radius = 0.244666548, spacing = 0.025 }}
-
-[[parts]]
-name = "near_field"
-kind = "sph"
-material = "soil"
-join = true
-exclude = ["charge"]
-fill = {{ shape = "box", min = [0.0, -2], max = [1.5, 0.0], spacing = 0.05 }}
-
-[sph]
-viscosity_alpha = 0.2
-viscosity_beta = 2.0
-
-[[boundary]]
-type = "axis"
-set = "soil.xmin"
-
-[[boundary]]
-type = "transmitting"
-set = "soil.xmax"
-
-[[boundary]]
-type = "transmitting"
-set = "soil.ymin"
-
-[[detonation]]
-position = [0.0, -0.5]
-time = 0.0
-)",
-                     form);
-}
 
 struct NearFieldRun {
   double reached = 0.0;                     // s, simulated time at the end (or the failure)
@@ -94,7 +36,9 @@ struct NearFieldRun {
 // Runs to 30 ms, or (stop_at_tangle) until the first element tangles.
 NearFieldRun run_near_field(const std::string& form, bool stop_at_tangle) {
   test::use_threads(1);
-  const Model model = read_case_text(near_field_case(form), "near_field_" + form + ".toml");
+  const Model model = read_case_text(
+      test::near_field_case(fmt::format("joined near field, {} hourglass form", form), 0.03, form),
+      "near_field_" + form + ".toml");
   NearFieldRun out;
   const auto start = std::chrono::steady_clock::now();
   testing::internal::CaptureStderr();

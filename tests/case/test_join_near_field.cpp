@@ -27,62 +27,11 @@
 #include "case/case_reader.hpp"
 #include "common/fem_models.hpp"
 #include "common/verification.hpp"
+#include "near_field_case.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
 namespace {
-
-const char* near_field_case = R"(title = "joined near field"
-[run]
-geometry = "axisymmetric"
-end_time = 0.008
-cfl = 0.6
-
-[materials.soil]
-preset = "sandy_clay_wang2005_seismic"
-
-[materials.charge]
-preset = "tnt_wang2005"
-
-[[parts]]
-name = "soil"
-material = "soil"
-block = { origin = [0, -3.5], size = [2.5, 3.5], cells = [50, 70] }
-
-[[parts]]
-name = "charge"
-kind = "sph"
-material = "charge"
-fill = { shape = "sphere", centre = [0.0, -0.5], radius = 0.244666548, spacing = 0.025 }
-
-[[parts]]
-name = "near_field"
-kind = "sph"
-material = "soil"
-join = true
-exclude = ["charge"]
-fill = { shape = "box", min = [0.0, -2], max = [1.5, 0.0], spacing = 0.05 }
-
-[sph]
-viscosity_alpha = 0.2
-viscosity_beta = 2.0
-
-[[boundary]]
-type = "axis"
-set = "soil.xmin"
-
-[[boundary]]
-type = "transmitting"
-set = "soil.xmax"
-
-[[boundary]]
-type = "transmitting"
-set = "soil.ymin"
-
-[[detonation]]
-position = [0.0, -0.5]
-time = 0.0
-)";
 
 struct Follow {
   double node_shift = 0.0;      // m, |u_node - u_particles|
@@ -112,7 +61,7 @@ Follow follow(const Solver<2>& solver, const std::vector<double>& x0, double r, 
 
 TEST(JoinedNearField, FaceNodesFollowTheParticlesAtTheAxisAndTheCorner) {
   test::use_threads(1);
-  const Model model = read_case_text(near_field_case, "near_field.toml");
+  const Model model = read_case_text(test::near_field_case("joined near field", 0.008), "near_field.toml");
   Solver<2> solver(model);
   const std::vector<double> x0 = solver.position();
   ASSERT_NO_THROW(while (solver.time() < 8e-3) solver.step());

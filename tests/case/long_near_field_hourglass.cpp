@@ -44,7 +44,8 @@ NearFieldRun run_near_field(const std::string& form, bool stop_at_tangle) {
   testing::internal::CaptureStderr();
   try {
     Solver<2> solver(model);
-    while (solver.time() < model.run.end_time) {
+    while (solver.time() < model.run.end_time * (1 - 1e-12)) {
+      solver.limit_next_step(model.run.end_time - solver.time());  // land on the end time
       solver.step();
       if (out.first_tangled < 0.0 && solver.first_tangled_cycle() >= 0) {
         out.first_tangled = solver.time();

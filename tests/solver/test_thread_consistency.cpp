@@ -29,6 +29,7 @@
 
 #include "../../bench/bench_problems.hpp"
 #include "common/fem_models.hpp"
+#include "common/history_difference.hpp"
 #include "common/verification.hpp"
 #include "coupling/joined_zone.hpp"
 #include "fem/parallel.hpp"
@@ -36,19 +37,9 @@
 #include "sph/sph_system.hpp"
 
 using namespace camouflet;
+using camouflet::test::relative_difference;
 
 namespace {
-
-// Largest |a - b| over the histories, relative to the largest |a|.
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double peak = 0.0, diff = 0.0;
-  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
-    peak = std::max(peak, std::abs(a[k]));
-    diff = std::max(diff, std::abs(a[k] - b[k]));
-  }
-  return peak > 0.0 ? diff / peak : diff;
-}
 
 // Gauges: vertical velocity of nodes and stress_zz of elements spread through
 // the cube, every cycle.

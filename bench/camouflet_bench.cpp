@@ -2,7 +2,7 @@
 // of bench/bench_problems.hpp, runs it on the requested thread count and
 // prints ONE JSON line with the grind time.
 //
-//   camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly buffers|colours]
+//   camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly buffers|colours|colour_blocks]
 //   PROBLEM: taylor_bar | hex_impact | soil_axisymmetric | buried_coarse
 // --assembly: how the FEM element forces are assembled on threads
 // (fem_elements.hpp, ForceAssembly); the line then carries an "assembly" key.
@@ -147,10 +147,10 @@ bool buried_coarse(int threads, long steps, Result& r) {
 }
 
 int usage() {
-  std::fprintf(
-      stderr,
-      "usage: camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly buffers|colours]\n"
-      "  PROBLEM: taylor_bar | hex_impact | soil_axisymmetric | buried_coarse\n");
+  std::fprintf(stderr,
+               "usage: camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly "
+               "buffers|colours|colour_blocks]\n"
+               "  PROBLEM: taylor_bar | hex_impact | soil_axisymmetric | buried_coarse\n");
   return 2;
 }
 
@@ -175,6 +175,8 @@ int main(int argc, char** argv) {
         set_default_force_assembly(ForceAssembly::buffers);
       else if (!std::strcmp(assembly_name, "colours"))
         set_default_force_assembly(ForceAssembly::colours);
+      else if (!std::strcmp(assembly_name, "colour_blocks"))
+        set_default_force_assembly(ForceAssembly::colour_blocks);
       else
         return usage();
     } else

@@ -254,8 +254,10 @@ double FemElements<D>::volume_of(const double* x, std::size_t e) const {
 template <int D>
 void FemElements<D>::set_assembly(ForceAssembly assembly) {
   assembly_ = assembly;
-  if (assembly == ForceAssembly::colours && colouring_.elements.size() != size())
-    colouring_ = colour_elements(connectivity, nodes, node_count_);
+  const std::size_t block = assembly == ForceAssembly::colour_blocks ? colour_block : 1;
+  if (assembly != ForceAssembly::buffers &&
+      (colouring_.block != block || colouring_.begin.back() * block < size()))
+    colouring_ = colour_elements(connectivity, nodes, node_count_, block);
 }
 
 template <int D>
@@ -385,38 +387,53 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
   };
 
   const int team = static_cast<std::int64_t>(ne) > parallel_threshold ? omp_get_max_threads() : 1;
-  if (assembly_ == ForceAssembly::colours) {
-    // One colour after the other, the packs of a colour shared out among the threads and
-    // scattered straight into f: no element of a colour shares a node with another, so each
-    // node gets its contributions in colour order whatever the thread count (the barrier at the
-    // end of each colour's loop keeps the colours apart).
-    if (colouring_.elements.size() != ne) set_assembly(ForceAssembly::colours);
-    const std::size_t colours = colouring_.colours();
+  if (assembly_ != ForceAssembly::buffers) {
+    // One colour after the other, the packs (colours) or blocks (colour_blocks) of a colour
+    // shared out among the threads and scattered straight into f: no two of a colour share a
+    // node, so each node gets its contributions in colour order whatever the thread count (the
+    // barrier at the end of each colour's loop keeps the colours apart).
+    set_assembly(assembly_);  // the colouring, if not made yet
+    const std::size_t colours = colouring_.colours(), block = colouring_.block;
+    const bool single = block == 1;
+    // Slots of a colour: its packs of single elements, or its blocks.
+    const auto slots = [&](std::size_t c) {
+      const std::size_t count = colouring_.begin[c + 1] - colouring_.begin[c];
+      return single ? (count + W - 1) / W : count;
+    };
     if (stiff_hg) {
-      std::size_t all_packs = 0;
-      for (std::size_t c = 0; c < colours; ++c)
-        all_packs += (colouring_.begin[c + 1] - colouring_.begin[c] + W - 1) / W;
-      pack_stored_.assign(all_packs, 0.0);
+      std::size_t all = 0;
+      for (std::size_t c = 0; c < colours; ++c) all += slots(c);
+      pack_stored_.assign(all, 0.0);
     }
+    const std::uint32_t* const listed = colouring_.blocks.data();
 #pragma omp parallel num_threads(team) if (team > 1)
     {
-      std::size_t pack_base = 0;  // first pack of colour c among all colours' packs
+      std::size_t slot_base = 0;  // first slot of colour c among all colours' slots
       for (std::size_t c = 0; c < colours; ++c) {
         const std::size_t first = colouring_.begin[c], count = colouring_.begin[c + 1] - first;
-        const std::int64_t packs = static_cast<std::int64_t>((count + W - 1) / W);
+        const std::int64_t n_slots = static_cast<std::int64_t>(slots(c));
 #pragma omp for schedule(static)
-        for (std::int64_t k = 0; k < packs; ++k) {
-          const std::size_t offset = static_cast<std::size_t>(k) * W;
-          const ListedLanes lanes{colouring_.elements.data() + first + offset,
-                                  static_cast<int>(std::min<std::size_t>(W, count - offset))};
-          const double held = pack(lanes, f, f_hourglass);
-          if (stiff_hg) pack_stored_[pack_base + static_cast<std::size_t>(k)] = held;
+        for (std::int64_t k = 0; k < n_slots; ++k) {
+          double held = 0.0;
+          if (single) {
+            const std::size_t offset = static_cast<std::size_t>(k) * W;
+            held = pack(ListedLanes{listed + first + offset,
+                                    static_cast<int>(std::min<std::size_t>(W, count - offset))},
+                        f, f_hourglass);
+          } else {
+            const std::size_t e_begin = listed[first + static_cast<std::size_t>(k)] * block;
+            const std::size_t e_end = std::min(ne, e_begin + block);
+            for (std::size_t e0 = e_begin; e0 < e_end; e0 += W)
+              held += pack(ConsecutiveLanes{e0, static_cast<int>(std::min<std::size_t>(W, e_end - e0))}, f,
+                           f_hourglass);
+          }
+          if (stiff_hg) pack_stored_[slot_base + static_cast<std::size_t>(k)] = held;
         }
-        pack_base += static_cast<std::size_t>(packs);
+        slot_base += static_cast<std::size_t>(n_slots);
       }
     }
     double stored = 0.0;
-    for (const double held : pack_stored_) stored += held;  // pack order: any thread count, the same sum
+    for (const double held : pack_stored_) stored += held;  // slot order: any thread count, the same sum
     if (!stiff_hg) pack_stored_.clear();
     return stored;
   }

@@ -28,18 +28,22 @@ struct ViscosityControl {
 
 // How add_internal_forces assembles nodal forces on several threads without
 // write conflicts (docs/performance.md, "Session 6: colouring against
-// per-thread buffers"). Both give the same forces to round-off.
-//   buffers: packs of consecutive elements; each thread scatters into its own
-//            zeroed copy of the force array, the copies are added in thread
-//            order after the loop (sums depend on the thread count by round-off);
-//   colours: packs of 8 elements of one colour (element_colouring.hpp), one
-//            colour after the other, scattered straight into the force array
-//            (the same sums on any thread count).
+// per-thread buffers"). All give the same forces to round-off.
+//   buffers:       packs of consecutive elements; each thread scatters into its
+//                  own zeroed copy of the force array, the copies are added in
+//                  thread order after the loop (the sums depend on the thread
+//                  count by round-off);
+//   colours:       packs of 8 elements of one colour (element_colouring.hpp),
+//                  one colour after the other, scattered straight into the
+//                  force array (the same sums on any thread count);
+//   colour_blocks: the same with blocks of colour_block consecutive elements
+//                  as the coloured unit (the element order's locality kept).
 // An internal switch, not a case key: the physics is the same, only the speed
 // differs, and the faster is the default. The benchmark command selects it.
-enum class ForceAssembly { buffers, colours };
+enum class ForceAssembly { buffers, colours, colour_blocks };
+inline constexpr std::size_t colour_block = 512;  // elements
 
-// The assembly of FemElements built from now on (process-wide; default below).
+// The assembly of the FemElements built from now on (process-wide, for the benchmark command).
 ForceAssembly default_force_assembly();
 void set_default_force_assembly(ForceAssembly assembly);
 
@@ -113,8 +117,8 @@ class FemElements {
   ForceAssembly assembly_ = ForceAssembly::buffers;
   // Per-thread force buffers of the threaded assembly (threads 1..T-1), kept zeroed.
   std::vector<std::vector<double>> thread_force_, thread_hourglass_force_;
-  // Colour assembly: the colouring, and the stiffness-form energy of each of its packs
-  // (added in pack order after the loop, so that it too does not depend on the thread count).
+  // Colour assemblies: the colouring, and the stiffness-form energy of each of its packs or blocks
+  // (added in their order after the loop, so that it too does not depend on the thread count).
   ElementColouring colouring_;
   std::vector<double> pack_stored_;
 };

@@ -619,9 +619,8 @@ void SphSystem<D>::update_state(double dt, double time) {
   std::size_t limited = 0;
   const MaterialContext ctx{dt, time};
   // One parallel region from the point factors to the material batches (docs/performance.md,
-  // "Session 6: fewer parallel regions"): the point factors (barrier), the rows (barrier), each
-  // row's sums with its end-of-step eta, h and x written at once (barrier), the ghosts (one
-  // thread), the batches' inputs.
+  // "Session 6: fewer parallel regions"): the point factors (barrier), the rows (barrier), then
+  // each row's sums, its end-of-step eta, h and x and its material point's inputs in one pass.
 #pragma omp parallel reduction(+ : limited)
   {
     fill_point_factors();
@@ -723,29 +722,22 @@ void SphSystem<D>::update_state(double dt, double time) {
         p_.smoothing_length[i] = hi;
         p_.position[i] = x_end[i];
         if (eta_new < m[i] * kernel_.value(0.0, hi)) ++limited;
-      }
-#pragma omp single
-    refresh_ghosts();
-    // The shared constitutive update's inputs, one batch per material.
-    for (std::size_t mat = 0; mat < batches_.size(); ++mat) {
-      auto& pts = batches_[mat];
-      const auto& members = batch_particles_[mat];
-#pragma omp for schedule(static)
-      for (std::size_t k = 0; k < members.size(); ++k) {
-        const std::size_t i = members[k];
-        const double rho = p_.planar_density[i] / geometric_weight(x[i]);
-        pts.density_previous[k] = p_.density[i];
-        pts.density[k] = rho;
-        pts.strain_rate[k] = p_.strain_rate[i];
-        pts.spin[k] = p_.spin[i];
-        pts.artificial_viscosity[k] = 0.0;  // SPH viscosity is pairwise: its heating is added below
-        pts.characteristic_length[k] = p_.smoothing_length[i];
-        pts.specific_energy[k] += p_.heating[i];
+        // The shared constitutive update's inputs: row i's slot in its material's batch.
+        MaterialPoints& pts = batches_[p_.material[i]];
+        const std::size_t slot = p_.slot[i];
+        const double rho = eta_new / geometric_weight(x_end[i]);
+        pts.density_previous[slot] = p_.density[i];
+        pts.density[slot] = rho;
+        pts.strain_rate[slot] = d;
+        pts.spin[slot] = p_.spin[i];
+        pts.artificial_viscosity[slot] = 0.0;  // SPH viscosity is pairwise: its heating is added below
+        pts.characteristic_length[slot] = hi;
+        pts.specific_energy[slot] += p_.heating[i];
         p_.heating[i] = 0.0;
         p_.density[i] = rho;
       }
-    }
   }
+  refresh_ghosts();
   volume_limited_ = limited;
   correction_current_ = false;
   pair_dissipation_current_ = false;

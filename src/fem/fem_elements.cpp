@@ -25,7 +25,7 @@ namespace {
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
 
-std::atomic<ForceAssembly> default_assembly{ForceAssembly::buffers};
+std::atomic<ForceAssembly> default_assembly{ForceAssembly::colour_blocks};
 
 template <int D>
 using NodeValues = double[D][Shape<D>::nodes];
@@ -254,7 +254,7 @@ double FemElements<D>::volume_of(const double* x, std::size_t e) const {
 template <int D>
 void FemElements<D>::set_assembly(ForceAssembly assembly) {
   assembly_ = assembly;
-  const std::size_t block = assembly == ForceAssembly::colour_blocks ? colour_block : 1;
+  const std::size_t block = assembly == ForceAssembly::colour_blocks ? colour_block_size(size()) : 1;
   if (assembly != ForceAssembly::buffers &&
       (colouring_.block != block || colouring_.begin.back() * block < size()))
     colouring_ = colour_elements(connectivity, nodes, node_count_, block);

@@ -36,12 +36,22 @@ struct ViscosityControl {
 //   colours:       packs of 8 elements of one colour (element_colouring.hpp),
 //                  one colour after the other, scattered straight into the
 //                  force array (the same sums on any thread count);
-//   colour_blocks: the same with blocks of colour_block consecutive elements
-//                  as the coloured unit (the element order's locality kept).
+//   colour_blocks: the same with blocks of colour_block_size() consecutive
+//                  elements as the coloured unit, which keeps the element
+//                  order's memory locality. The default: as fast as the buffers
+//                  on one thread, faster on two, and the same bits on any
+//                  thread count.
 // An internal switch, not a case key: the physics is the same, only the speed
 // differs, and the faster is the default. The benchmark command selects it.
 enum class ForceAssembly { buffers, colours, colour_blocks };
-inline constexpr std::size_t colour_block = 512;  // elements
+
+// Elements per colour block: 512 (64 packs of 8), fewer in small meshes so that there are at
+// least 64 blocks to share among the threads; a multiple of 8. Depends on the mesh only, so
+// that the sums do not depend on the thread count.
+inline std::size_t colour_block_size(std::size_t elements) {
+  const std::size_t block = elements / 64 / 8 * 8;
+  return block < 8 ? 8 : (block > 512 ? 512 : block);
+}
 
 // The assembly of the FemElements built from now on (process-wide, for the benchmark command).
 ForceAssembly default_force_assembly();

@@ -162,15 +162,26 @@ void check_assemblies(const std::string& name, HourglassForm form) {
 
 // Greedy colouring of a structured block in element order: single elements need 2^D colours (node
 // valence 2^D); blocks of 512 elements (two 16 x 16 planes of hexes, 11.4 rows of 45 quads) conflict
-// only with the blocks before and after them: 2 colours.
+// only with the blocks before and after them: 2 colours. The default block sizes of these meshes:
+// 64 hexes (4 rows of 16) need 4 colours, 56 quads (1.2 rows of 45) still 2.
 TEST(ElementColouring, HexBlockNoTwoElementsOfAColourShareANode) {
   check_colouring<3>("hex8 block 16^3, distorted", 1, 8);
-  check_colouring<3>("hex8 block 16^3, distorted", colour_block, 2);
+  check_colouring<3>("hex8 block 16^3, distorted", 512, 2);
+  ASSERT_EQ(colour_block_size(4096), 64u);
+  check_colouring<3>("hex8 block 16^3, distorted", 64, 4);
 }
 
 TEST(ElementColouring, QuadBlockNoTwoElementsOfAColourShareANode) {
   check_colouring<2>("quad block 45 x 90, distorted", 1, 4);
-  check_colouring<2>("quad block 45 x 90, distorted", colour_block, 2);
+  check_colouring<2>("quad block 45 x 90, distorted", 512, 2);
+  ASSERT_EQ(colour_block_size(4050), 56u);
+  check_colouring<2>("quad block 45 x 90, distorted", 56, 2);
+}
+
+TEST(ElementColouring, BlockSizeDependsOnTheMeshOnly) {
+  EXPECT_EQ(colour_block_size(91125), 512u);  // capped
+  EXPECT_EQ(colour_block_size(5000), 72u);    // at least 64 blocks, a multiple of 8
+  EXPECT_EQ(colour_block_size(100), 8u);      // at least one pack of 8
 }
 
 TEST(ElementColouring, HexAssembliesAgreeViscousHourglass) {

@@ -2,8 +2,10 @@
 // of bench/bench_problems.hpp, runs it on the requested thread count and
 // prints ONE JSON line with the grind time.
 //
-//   camouflet_bench PROBLEM --threads N [--size S] [--steps K]
+//   camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly buffers|colours|colour_blocks]
 //   PROBLEM: taylor_bar | hex_impact | soil_axisymmetric | buried_coarse
+// --assembly: how the FEM element forces are assembled on threads
+// (fem_elements.hpp, ForceAssembly); the line then carries an "assembly" key.
 //
 // Grind time = time / (size x cycles): wall_ns is the wall time, cpu_ns the
 // CPU time of all threads (getrusage), i.e. the per-core cost; on a shared,
@@ -54,6 +56,7 @@ struct Result {
 };
 
 double load_at_start = -1.0;
+const char* assembly_name = nullptr;  // --assembly, if given
 
 void print(const Result& r, int threads) {
   rusage u{};
@@ -67,6 +70,7 @@ void print(const Result& r, int threads) {
     std::printf("\"mean_neighbours\":%.2f,\"ns_per_pair_cpu\":%.3f,", r.neighbours,
                 1e9 * r.cpu_s / (work * r.neighbours));
   if (!r.note.empty()) std::printf("\"note\":\"%s\",", r.note.c_str());
+  if (assembly_name) std::printf("\"assembly\":\"%s\",", assembly_name);
   std::printf("\"peak_rss_mib\":%.1f,\"load_average\":%.2f}\n", static_cast<double>(u.ru_maxrss) / 1024.0,
               load_at_start);
   std::fflush(stdout);
@@ -144,7 +148,8 @@ bool buried_coarse(int threads, long steps, Result& r) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: camouflet_bench PROBLEM --threads N [--size S] [--steps K]\n"
+               "usage: camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly "
+               "buffers|colours|colour_blocks]\n"
                "  PROBLEM: taylor_bar | hex_impact | soil_axisymmetric | buried_coarse\n");
   return 2;
 }
@@ -164,7 +169,17 @@ int main(int argc, char** argv) {
       size = std::atol(argv[++i]);
     else if (!std::strcmp(argv[i], "--steps") && has_value)
       steps = std::atol(argv[++i]);
-    else
+    else if (!std::strcmp(argv[i], "--assembly") && has_value) {
+      assembly_name = argv[++i];
+      if (!std::strcmp(assembly_name, "buffers"))
+        set_default_force_assembly(ForceAssembly::buffers);
+      else if (!std::strcmp(assembly_name, "colours"))
+        set_default_force_assembly(ForceAssembly::colours);
+      else if (!std::strcmp(assembly_name, "colour_blocks"))
+        set_default_force_assembly(ForceAssembly::colour_blocks);
+      else
+        return usage();
+    } else
       return usage();
   }
   if (threads < 1 || size < 0 || steps < 0) return usage();

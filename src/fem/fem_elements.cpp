@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -24,6 +25,8 @@ namespace camouflet {
 namespace {
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
+
+std::atomic<ForceAssembly> default_assembly{ForceAssembly::colour_blocks};
 
 template <int D>
 using NodeValues = double[D][Shape<D>::nodes];
@@ -51,21 +54,41 @@ inline double ring_weight(bool axisymmetric, const NodeValues<D>& x, double& r_b
 template <int D>
 using PackedNodes = Pack[D][Shape<D>::nodes];
 
-// Lane l <- element (first + l); lanes past `count` repeat the last element
-// (their results are never scattered). Gathers F node fields (positions,
+// The elements of one pack: lane l holds element at(l); lanes past `count`
+// repeat the last element (computed, never scattered). Consecutive packs
+// (the buffer assembly) load element arrays as whole packs; listed packs
+// (one colour's elements, element_colouring.hpp) lane by lane.
+struct ConsecutiveLanes {
+  static constexpr bool consecutive = true;
+  std::size_t first;
+  int count;
+  std::size_t at(int l) const { return first + static_cast<std::size_t>(l < count ? l : count - 1); }
+};
+struct ListedLanes {
+  static constexpr bool consecutive = false;
+  const std::uint32_t* element;
+  int count;
+  std::size_t at(int l) const { return element[l < count ? l : count - 1]; }
+};
+
+// Lane l <- element lanes.at(l). Gathers F node fields (positions,
 // velocities) at once, so that each node's numbers are fetched once for all.
-template <int D, int F>
-inline void gather_packs(const double* const (&field)[F], const std::int64_t* conn, int count,
-                         PackedNodes<D>* const (&out)[F]) {
+template <int D, int F, class Lanes>
+inline void gather_packs(const double* const (&field)[F], const std::int64_t* connectivity,
+                         const Lanes& lanes, PackedNodes<D>* const (&out)[F]) {
   constexpr int N = Shape<D>::nodes;
 #if defined(__AVX512F__)
-  // One 8-lane gather of node a's numbers (lane l: row l of conn), then one
-  // 8-lane gather per field and component straight into the pack: no
+  // One 8-lane gather of node a's numbers (lane l: row of element at(l)), then
+  // one 8-lane gather per field and component straight into the pack: no
   // lane-by-lane stores read back as a whole register.
-  __m512i row = _mm512_set_epi64(7 * N, 6 * N, 5 * N, 4 * N, 3 * N, 2 * N, N, 0);
-  if (count < pack_width) {
+  const std::int64_t* conn = connectivity;
+  __m512i row;
+  if (Lanes::consecutive && lanes.count == pack_width) {
+    conn += lanes.at(0) * N;
+    row = _mm512_set_epi64(7 * N, 6 * N, 5 * N, 4 * N, 3 * N, 2 * N, N, 0);
+  } else {
     alignas(64) std::int64_t rows[pack_width];
-    for (int l = 0; l < pack_width; ++l) rows[l] = (l < count ? l : count - 1) * N;
+    for (int l = 0; l < pack_width; ++l) rows[l] = static_cast<std::int64_t>(lanes.at(l)) * N;
     row = _mm512_load_si512(rows);
   }
   // The masked forms with an explicit source: the plain ones pass an
@@ -79,28 +102,34 @@ inline void gather_packs(const double* const (&field)[F], const std::int64_t* co
   }
 #else
   for (int f = 0; f < F; ++f) {
-    alignas(sizeof(Pack)) double lanes[D][N][pack_width];  // the layout of PackedNodes<D>
+    alignas(sizeof(Pack)) double lanes_of[D][N][pack_width];  // the layout of PackedNodes<D>
     for (int l = 0; l < pack_width; ++l) {
-      const std::int64_t* c = conn + (l < count ? l : count - 1) * N;
+      const std::int64_t* c = connectivity + lanes.at(l) * N;
       for (int a = 0; a < N; ++a)
-        for (int i = 0; i < D; ++i) lanes[i][a][l] = field[f][c[a] * D + i];
+        for (int i = 0; i < D; ++i) lanes_of[i][a][l] = field[f][c[a] * D + i];
     }
-    static_assert(sizeof lanes == sizeof *out[f]);
-    std::memcpy(out[f], lanes, sizeof lanes);
+    static_assert(sizeof lanes_of == sizeof *out[f]);
+    std::memcpy(out[f], lanes_of, sizeof lanes_of);
   }
 #endif
+}
+
+// An element array at the lanes' elements as a pack.
+template <class Lanes>
+inline Pack load_pack(const double* a, const Lanes& lanes) {
+  Pack p;
+  if (Lanes::consecutive && lanes.count == pack_width) {
+    std::memcpy(&p, a + lanes.at(0), sizeof p);
+  } else {
+    for (int l = 0; l < pack_width; ++l) p[l] = a[lanes.at(l)];
+  }
+  return p;
 }
 
 // Lanes e0 .. e0 + count - 1 of an element array as a pack; lanes past
 // `count` repeat the last element, as in gather_packs.
 inline Pack load_pack(const double* a, std::size_t e0, int count) {
-  Pack p;
-  if (count == pack_width) {
-    std::memcpy(&p, a + e0, sizeof p);
-  } else {
-    for (int l = 0; l < pack_width; ++l) p[l] = a[e0 + static_cast<std::size_t>(l < count ? l : count - 1)];
-  }
-  return p;
+  return load_pack(a, ConsecutiveLanes{e0, count});
 }
 
 // All pack_width lanes of p into a[e0 ..].
@@ -168,6 +197,14 @@ int corner_jacobians_negative(const Nodes& x, int lane = -1) {
 
 }  // namespace
 
+ForceAssembly default_force_assembly() {
+  return default_assembly.load();
+}
+
+void set_default_force_assembly(ForceAssembly assembly) {
+  default_assembly.store(assembly);
+}
+
 template <int D>
 FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::vector<double>& coordinates)
     : connectivity(mesh.connectivity), axisymmetric_(mode == GeometryMode::axisymmetric) {
@@ -203,6 +240,7 @@ FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::v
     length[e] = l;
   }
   node_count_ = coordinates.size() / D;
+  set_assembly(default_force_assembly());
 }
 
 template <int D>
@@ -212,6 +250,15 @@ double FemElements<D>::volume_of(const double* x, std::size_t e) const {
   double r_bar = 0.0;
   const double w = ring_weight<D>(axisymmetric_, xe, r_bar);
   return Shape<D>::gradients(xe, b) * w;
+}
+
+template <int D>
+void FemElements<D>::set_assembly(ForceAssembly assembly) {
+  assembly_ = assembly;
+  const std::size_t block = assembly == ForceAssembly::colour_blocks ? colour_block_size(size()) : 1;
+  if (assembly != ForceAssembly::buffers &&
+      (colouring_.block != block || colouring_.begin.back() * block < size()))
+    colouring_ = colour_elements(connectivity, nodes, node_count_, block);
 }
 
 template <int D>
@@ -226,13 +273,13 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
   const bool hg_stiff = hg.form == HourglassForm::stiffness;
   const std::size_t ne = size();
 
-  // One pack of elements e0 .. e0 + count - 1 (element_pack.hpp): forces
+  // One pack of elements lanes.at(0 .. count - 1) (element_pack.hpp): forces
   // computed lane-parallel, scattered into f_out (and the hourglass part into
   // fh_out) lane by lane; returns the stiffness-form hourglass energy held.
-  const auto pack = [&](std::size_t e0, double* f_out, double* fh_out) {
-    const int count = static_cast<int>(std::min<std::size_t>(W, ne - e0));
+  const auto pack = [&](const auto& lanes, double* f_out, double* fh_out) {
+    const int count = lanes.count;
     bool any = false;
-    for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
+    for (int l = 0; l < count; ++l) any = any || !eroded[lanes.at(l)];
     if (!any) return 0.0;  // an eroded element carries no force (issue 6)
     // The lanes' hourglass control: kappa and form per lane (the same
     // arithmetic per lane whichever forms share the pack).
@@ -240,17 +287,16 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     bool stiff[W];
     bool viscous_hg = false, stiff_hg = false;
     for (int l = 0; l < W; ++l) {
-      const std::size_t e = e0 + static_cast<std::size_t>(l < count ? l : count - 1);
+      const std::size_t e = lanes.at(l);
       if (own_hg) kappa[l] = hourglass_coefficient[e];
       stiff[l] = own_hg ? hourglass_stiffness[e] != 0 : hg_stiff;
       if (l < count && kappa[l] > 0.0) (stiff[l] ? stiff_hg : viscous_hg) = true;
     }
-    const std::int64_t* conn = &connectivity[e0 * N];
     PackedNodes<D> xe, ve, b, fe;
     if (viscous_hg || stiff_hg)
-      gather_packs<D, 2>({x, v}, conn, count, {&xe, &ve});
+      gather_packs<D, 2>({x, v}, connectivity.data(), lanes, {&xe, &ve});
     else
-      gather_packs<D, 1>({x}, conn, count, {&xe});
+      gather_packs<D, 1>({x}, connectivity.data(), lanes, {&xe});
     const Pack measure = Shape<D>::gradients(xe, b);
     Pack r_bar{};
     const Pack w = ring_weight_pack<D>(axi, xe, r_bar);
@@ -259,7 +305,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     // Stress divergence: f_ia = -V sigma_ij b_ja (FB 1981, eq. 17), with q as a pressure.
     Pack sig[D][D] = {}, hoop{};
     for (int l = 0; l < W; ++l) {
-      const std::size_t e = e0 + static_cast<std::size_t>(l < count ? l : count - 1);
+      const std::size_t e = lanes.at(l);
       const SymTensor& s = stress[e];
       const double q = viscosity[e];
       sig[0][0][l] = s.xx - q;
@@ -295,8 +341,8 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
       // Viscous: a_h = kappa rho c l^(D-1) / 4 (FB 1981, eq. 60; the LS-DYNA
       // form Q_hg rho V^(2/3) c / 4 in 3-D); stiffness: k = kappa rho c^2 l^(D-2) / 4.
       // l = V / largest face, from the last kinematics (same geometry).
-      const Pack rho = load_pack(density.data(), e0, count), c = load_pack(wave_speed.data(), e0, count),
-                 le = load_pack(length.data(), e0, count);
+      const Pack rho = load_pack(density.data(), lanes), c = load_pack(wave_speed.data(), lanes),
+                 le = load_pack(length.data(), lanes);
       Pack coef;
       if (!stiff_hg) {
         coef = 0.25 * kappa * rho * c * (D == 2 ? le : le * le);
@@ -322,11 +368,11 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
           if (stiff_hg) {
             for (int l = 0; l < count; ++l) {
               if (!stiff[l]) continue;
-              double& hd = hourglass_displacement[(e0 + static_cast<std::size_t>(l)) * modes * D +
-                                                  static_cast<std::size_t>(m * D + i)];
-              if (!eroded[e0 + static_cast<std::size_t>(l)]) hd += rate[l] * dt_previous;
+              const std::size_t e = lanes.at(l);
+              double& hd = hourglass_displacement[e * modes * D + static_cast<std::size_t>(m * D + i)];
+              if (!eroded[e]) hd += rate[l] * dt_previous;
               amplitude[l] = hd;
-              if (!eroded[e0 + static_cast<std::size_t>(l)]) stored += 0.5 * coef[l] * hd * hd;
+              if (!eroded[e]) stored += 0.5 * coef[l] * hd * hd;
             }
           }
           scaled[m][i] = coef * amplitude;
@@ -347,8 +393,9 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     // energy is held as a state (the return value), not integrated as work.
     const bool scatter_hourglass = fh_out && viscous_hg;
     for (int l = 0; l < count; ++l) {
-      if (eroded[e0 + static_cast<std::size_t>(l)]) continue;
-      const std::int64_t* c = conn + l * N;
+      const std::size_t e = lanes.at(l);
+      if (eroded[e]) continue;
+      const std::int64_t* c = connectivity.data() + e * N;
       const bool scatter_lane = scatter_hourglass && !stiff[l];
       for (int a = 0; a < N; ++a) {
         const std::int64_t k = c[a] * D;
@@ -362,12 +409,67 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     }
     return stored;
   };
+  const auto consecutive = [&](std::int64_t k) {
+    const std::size_t e0 = static_cast<std::size_t>(k) * W;
+    return ConsecutiveLanes{e0, static_cast<int>(std::min<std::size_t>(W, ne - e0))};
+  };
+
+  const int team = static_cast<std::int64_t>(ne) > parallel_threshold ? omp_get_max_threads() : 1;
+  if (assembly_ != ForceAssembly::buffers) {
+    // One colour after the other, the packs (colours) or blocks (colour_blocks) of a colour
+    // shared out among the threads and scattered straight into f: no two of a colour share a
+    // node, so each node gets its contributions in colour order whatever the thread count (the
+    // barrier at the end of each colour's loop keeps the colours apart).
+    set_assembly(assembly_);  // the colouring, if not made yet
+    const std::size_t colours = colouring_.colours(), block = colouring_.block;
+    const bool single = block == 1;
+    // Slots of a colour: its packs of single elements, or its blocks.
+    const auto slots = [&](std::size_t c) {
+      const std::size_t count = colouring_.begin[c + 1] - colouring_.begin[c];
+      return single ? (count + W - 1) / W : count;
+    };
+    if (stiff_hg) {
+      std::size_t all = 0;
+      for (std::size_t c = 0; c < colours; ++c) all += slots(c);
+      pack_stored_.assign(all, 0.0);
+    }
+    const std::uint32_t* const listed = colouring_.blocks.data();
+#pragma omp parallel num_threads(team) if (team > 1)
+    {
+      std::size_t slot_base = 0;  // first slot of colour c among all colours' slots
+      for (std::size_t c = 0; c < colours; ++c) {
+        const std::size_t first = colouring_.begin[c], count = colouring_.begin[c + 1] - first;
+        const std::int64_t n_slots = static_cast<std::int64_t>(slots(c));
+#pragma omp for schedule(static)
+        for (std::int64_t k = 0; k < n_slots; ++k) {
+          double held = 0.0;
+          if (single) {
+            const std::size_t offset = static_cast<std::size_t>(k) * W;
+            held = pack(ListedLanes{listed + first + offset,
+                                    static_cast<int>(std::min<std::size_t>(W, count - offset))},
+                        f, f_hourglass);
+          } else {
+            const std::size_t e_begin = listed[first + static_cast<std::size_t>(k)] * block;
+            const std::size_t e_end = std::min(ne, e_begin + block);
+            for (std::size_t e0 = e_begin; e0 < e_end; e0 += W)
+              held += pack(ConsecutiveLanes{e0, static_cast<int>(std::min<std::size_t>(W, e_end - e0))}, f,
+                           f_hourglass);
+          }
+          if (stiff_hg) pack_stored_[slot_base + static_cast<std::size_t>(k)] = held;
+        }
+        slot_base += static_cast<std::size_t>(n_slots);
+      }
+    }
+    double stored = 0.0;
+    for (const double held : pack_stored_) stored += held;  // slot order: any thread count, the same sum
+    if (!stiff_hg) pack_stored_.clear();
+    return stored;
+  }
 
   const std::int64_t packs = static_cast<std::int64_t>((ne + W - 1) / W);
-  const int team = static_cast<std::int64_t>(ne) > parallel_threshold ? omp_get_max_threads() : 1;
   double stored = 0.0;
   if (team == 1) {
-    for (std::int64_t k = 0; k < packs; ++k) stored += pack(static_cast<std::size_t>(k) * W, f, f_hourglass);
+    for (std::int64_t k = 0; k < packs; ++k) stored += pack(consecutive(k), f, f_hourglass);
     return stored;
   }
   // Race-free assembly: thread 0 scatters into f, thread t > 0 into its own
@@ -391,7 +493,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
                      : t == 0               ? f_hourglass
                                             : thread_hourglass_force_[static_cast<std::size_t>(t - 1)].data();
 #pragma omp for schedule(static)
-    for (std::int64_t k = 0; k < packs; ++k) stored += pack(static_cast<std::size_t>(k) * W, f_out, fh_out);
+    for (std::int64_t k = 0; k < packs; ++k) stored += pack(consecutive(k), f_out, fh_out);
 #pragma omp for schedule(static)
     for (std::int64_t k = 0; k < nv; ++k) {
       for (int s = 0; s < team - 1; ++s) {
@@ -450,9 +552,8 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
     bool any = false;
     for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
     if (!any) continue;
-    const std::int64_t* conn = &connectivity[e0 * N];
     PackedNodes<D> xe, ve, xh, b;
-    gather_packs<D, 2>({x, v}, conn, count, {&xe, &ve});
+    gather_packs<D, 2>({x, v}, connectivity.data(), ConsecutiveLanes{e0, count}, {&xe, &ve});
     Pack speed2{};
     for (int a = 0; a < N; ++a) {
       Pack s2{};

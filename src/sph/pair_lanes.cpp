@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "sph/sph_system.hpp"
 
@@ -39,6 +40,36 @@ inline LaneMask fill_group(const std::uint32_t* list, std::size_t width, std::ui
   return valid;
 }
 
+// One group of up to pair_lanes pairs (i, j_l) of a row, as both rows begin it: the neighbours
+// (lanes past the list's end repeat i and are masked out), the first `lines` 64-byte lines of
+// their records (pair_point.hpp), the separation x_i - x_j, its square, the pair smoothing
+// length, the lanes inside the support and the relative velocity v_i - v_j.
+template <int D, int lines>
+struct PairGroup {
+  std::size_t width;
+  std::uint32_t j[pair_lanes];
+  Lanes fj[8 * lines];  // the neighbours' records, field by field
+  Lanes dx[D];
+  Lanes dv[D];
+  Lanes r2;
+  Lanes hij;
+  LaneMask inside;
+
+  PairGroup(const PairPoint<D>* points, const double* fi, std::span<const std::uint32_t> list, std::size_t e0,
+            std::size_t i) {
+    using P = PairPoint<D>;
+    width = std::min<std::size_t>(pair_lanes, list.size() - e0);
+    const LaneMask valid = fill_group(list.data() + e0, width, static_cast<std::uint32_t>(i), j);
+    load_lines(points, j, lines, fj);
+    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - fj[P::x + a];
+    r2 = Lanes{};
+    for (int a = 0; a < D; ++a) r2 += dx[a] * dx[a];
+    hij = 0.5 * (fi[P::h] + fj[P::h]);
+    inside = valid & (r2 < support_factor * support_factor * hij * hij);
+    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - fj[P::v + a];
+  }
+};
+
 }  // namespace
 
 template <int D>
@@ -53,40 +84,29 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
   const bool tensile = options_.artificial_stress;
   const bool switched = options_.viscosity_switch && options_.viscosity_alpha > 0.0;
   const double alpha_fixed = options_.viscosity_alpha, beta_fixed = options_.viscosity_beta;
-  const double hi = fi[P::h], mi = fi[P::m], eta_i = fi[P::eta], ci = fi[P::c];
+  const double mi = fi[P::m], eta_i = fi[P::eta], ci = fi[P::c];
   const double inv_eta_i = 1.0 / eta_i;
   const bool tensile_i = tensile && has_tensile_[i];
   const Lanes zero{};
   Lanes acc[D] = {}, mu_max{}, count{};
   for (std::size_t e0 = 0; e0 < list.size(); e0 += pair_lanes) {
-    const std::size_t width = std::min<std::size_t>(pair_lanes, list.size() - e0);
-    std::uint32_t j[pair_lanes];
-    const LaneMask valid = fill_group(list.data() + e0, width, static_cast<std::uint32_t>(i), j);
-    Lanes fj[16];  // the neighbours' records, field by field
-    load_lines(points, j, 2, fj);
-    Lanes dx[D], dv[D];
-    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - fj[P::x + a];
-    Lanes r2 = zero;
-    for (int a = 0; a < D; ++a) r2 += dx[a] * dx[a];
-    const Lanes hij = 0.5 * (hi + fj[P::h]);
-    const LaneMask inside = valid & (r2 < support_factor * support_factor * hij * hij);
-    const Lanes inv_h = 1.0 / hij;
-    const Lanes r = sqrt_lanes(r2);
+    const PairGroup<D, 2> g(points, fi, list, e0, i);
+    const Lanes inv_h = 1.0 / g.hij;
+    const Lanes r = sqrt_lanes(g.r2);
     const auto w = kernel_.pair_terms(r, inv_h);
     Lanes grad[D];
-    for (int a = 0; a < D; ++a) grad[a] = dx[a] * w.gradient_factor;
-    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - fj[P::v + a];
+    for (int a = 0; a < D; ++a) grad[a] = g.dx[a] * w.gradient_factor;
     Lanes vr = zero;
-    for (int a = 0; a < D; ++a) vr += dv[a] * dx[a];
+    for (int a = 0; a < D; ++a) vr += g.dv[a] * g.dx[a];
     // Approaching pair: Monaghan 1992, eq. (4.2).
-    const LaneMask approaching = inside & (vr < 0.0);
-    const Lanes mu = approaching ? hij * vr / (r2 + 0.01 * hij * hij) : zero;
-    const Lanes eta_j = fj[P::eta];
-    const Lanes c_mean = 0.5 * (ci + fj[P::c]);
+    const LaneMask approaching = g.inside & (vr < 0.0);
+    const Lanes mu = approaching ? g.hij * vr / (g.r2 + 0.01 * g.hij * g.hij) : zero;
+    const Lanes eta_j = g.fj[P::eta];
+    const Lanes c_mean = 0.5 * (ci + g.fj[P::c]);
     Lanes pi_ij;
     if (switched) {
       Lanes alpha_j;
-      for (int l = 0; l < pair_lanes; ++l) alpha_j[l] = p_.viscosity_alpha[j[l]];
+      for (int l = 0; l < pair_lanes; ++l) alpha_j[l] = p_.viscosity_alpha[g.j[l]];
       const Lanes alpha = 0.5 * (p_.viscosity_alpha[i] + alpha_j);
       const Lanes beta = beta_fixed * alpha / alpha_fixed;
       pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta_i + eta_j));
@@ -98,8 +118,8 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     for (int a = 0; a < D; ++a) dissipation[a] = approaching ? grad[a] * pi_ij : zero;
     if (tensile) {
       LaneMask has;
-      for (int l = 0; l < pair_lanes; ++l) has[l] = (tensile_i || has_tensile_[j[l]]) ? -1 : 0;
-      has &= inside;
+      for (int l = 0; l < pair_lanes; ++l) has[l] = (tensile_i || has_tensile_[g.j[l]]) ? -1 : 0;
+      has &= g.inside;
       bool any = false;
       for (int l = 0; l < pair_lanes; ++l) any |= has[l] != 0;
       if (any) {
@@ -114,7 +134,7 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
         const double ri_c[6] = {ri.xx, ri.yy, ri.zz, ri.xy, ri.yz, ri.zx};
         Lanes rij[6];
         for (int l = 0; l < pair_lanes; ++l) {
-          const SymTensor& rj = p_.tensile_term[j[l]];
+          const SymTensor& rj = p_.tensile_term[g.j[l]];
           const double rj_c[6] = {rj.xx, rj.yy, rj.zz, rj.xy, rj.yz, rj.zx};
           for (int c = 0; c < 6; ++c) rij[c][l] = ri_c[c] + rj_c[c];
         }
@@ -127,28 +147,28 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     const Lanes inv_eta_j = 1.0 / eta_j;
     Lanes pair[6];
     for (int c = 0; c < 6; ++c) {
-      const Lanes sj = fj[P::stress + c];
+      const Lanes sj = g.fj[P::stress + c];
       pair[c] = volume_form ? fi[P::stress + c] * inv_eta_j + sj * inv_eta_i
                             : fi[P::stress + c] * inv_eta_i + sj * inv_eta_j;
     }
     Lanes force[D];
     apply_lanes<D>(pair, grad, force);
-    const Lanes mj = fj[P::m];
+    const Lanes mj = g.fj[P::m];
     Lanes reaction[D];
     for (int a = 0; a < D; ++a) {
-      force[a] = inside ? force[a] - dissipation[a] : zero;
+      force[a] = g.inside ? force[a] - dissipation[a] : zero;
       acc[a] += force[a] * mj;
       reaction[a] = force[a] * mi;
     }
-    count += inside ? Lanes{} + 1.0 : zero;
-    for (std::size_t l = 0; l < width; ++l) {
+    count += g.inside ? Lanes{} + 1.0 : zero;
+    for (std::size_t l = 0; l < g.width; ++l) {
       Vec<D>& out = dissipation_out[e0 + l];
       for (int a = 0; a < D; ++a) out[a] = dissipation[a][l];
-      if (j[l] < n) {
-        ForceSum& other = own[j[l]];
+      if (g.j[l] < n) {
+        ForceSum& other = own[g.j[l]];
         for (int a = 0; a < D; ++a) other.acceleration[a] -= reaction[a][l];
         other.compression_rate = std::max(other.compression_rate, -mu[l]);
-        other.count += inside[l] ? 1 : 0;
+        other.count += g.inside[l] ? 1 : 0;
       }
     }
   }
@@ -166,44 +186,34 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
   const double* fi = points[i].f;
   const auto list = active_upper_neighbours(i);
   const bool volume_form = options_.volume_form;
-  const double hi = fi[P::h], mi = fi[P::m], eta_i = fi[P::eta];
+  const double mi = fi[P::m], eta_i = fi[P::eta];
   const double inv_eta_i = 1.0 / eta_i, volume_i = mi / eta_i;
   const Lanes zero{};
   Lanes rate_sum{}, L_sum[D][D] = {};
   for (std::size_t e0 = 0; e0 < list.size(); e0 += pair_lanes) {
-    const std::size_t width = std::min<std::size_t>(pair_lanes, list.size() - e0);
-    std::uint32_t j[pair_lanes];
-    const LaneMask valid = fill_group(list.data() + e0, width, static_cast<std::uint32_t>(i), j);
-    Lanes fj[8];  // the first line of the neighbours' records (x, h, v, m), field by field
-    load_lines(points, j, 1, fj);
-    Lanes dx[D], dv[D];
-    for (int a = 0; a < D; ++a) dx[a] = fi[P::x + a] - fj[P::x + a];
-    Lanes r2 = zero;
-    for (int a = 0; a < D; ++a) r2 += dx[a] * dx[a];
-    const Lanes hij = 0.5 * (hi + fj[P::h]);
-    const LaneMask inside = valid & (r2 < support_factor * support_factor * hij * hij);
-    const Lanes gradient_factor = kernel_.pair_terms(sqrt_lanes(r2), 1.0 / hij).gradient_factor;
+    // The first line of the neighbours' records: x, h, v, m (eta, in the second, per lane below).
+    const PairGroup<D, 1> g(points, fi, list, e0, i);
+    const Lanes gradient_factor = kernel_.pair_terms(sqrt_lanes(g.r2), 1.0 / g.hij).gradient_factor;
     Lanes grad[D];
-    for (int a = 0; a < D; ++a) grad[a] = inside ? dx[a] * gradient_factor : zero;
-    for (int a = 0; a < D; ++a) dv[a] = fi[P::v + a] - fj[P::v + a];
-    const Lanes mj = fj[P::m], eta_j = gather(points, j, P::eta);
-    // Volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j.
+    for (int a = 0; a < D; ++a) grad[a] = g.inside ? g.dx[a] * gradient_factor : zero;
+    const Lanes mj = g.fj[P::m], eta_j = gather(points, g.j, P::eta);
+    // Volume form V_j for i and V_i for g.j; density form m_j / eta_i and m_i / eta_j.
     const Lanes weight_i = volume_form ? mj / eta_j : mj * inv_eta_i;
     const Lanes weight_j = volume_form ? Lanes{} + volume_i : mi * (1.0 / eta_j);
     Lanes rate = zero;
-    for (int a = 0; a < D; ++a) rate += dv[a] * grad[a];
+    for (int a = 0; a < D; ++a) rate += g.dv[a] * grad[a];
     rate_sum += weight_i * rate;
     const Lanes rate_j = weight_j * rate;
     Lanes wi_dv[D], wj_dv[D];
     for (int a = 0; a < D; ++a) {
-      wi_dv[a] = weight_i * dv[a];
-      wj_dv[a] = weight_j * dv[a];
+      wi_dv[a] = weight_i * g.dv[a];
+      wj_dv[a] = weight_j * g.dv[a];
     }
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) L_sum[a][b] -= wi_dv[a] * grad[b];
-    for (std::size_t l = 0; l < width; ++l) {
-      if (j[l] >= n) continue;  // ghosts and coupling points have no sums of their own
-      KinematicSum& other = own[j[l]];
+    for (std::size_t l = 0; l < g.width; ++l) {
+      if (g.j[l] >= n) continue;  // ghosts and coupling points have no sums of their own
+      KinematicSum& other = own[g.j[l]];
       other.rate += rate_j[l];
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) other.L[a][b] -= wj_dv[a][l] * grad[b][l];

@@ -80,18 +80,23 @@ void SphSystem<D>::compute_accelerations() {
 }
 
 template <int D>
-void SphSystem<D>::prepare_point_factors() {
+void SphSystem<D>::size_point_factors() {
   const std::size_t total = p_.position.size();
   sum_density_.resize(total);
   inverse_density_.resize(total);
   point_volume_.resize(total);
   has_tensile_.resize(total);
-  const bool tensile = options_.artificial_stress;
   // The SIMD pair loops (no kernel correction) read the packed records, filled in the same pass.
+  if (!options_.kernel_correction) pair_points_.resize(total);
+}
+
+template <int D>
+void SphSystem<D>::fill_point_factors() {
+  const std::size_t total = p_.position.size();
+  const bool tensile = options_.artificial_stress;
   const bool pack = !options_.kernel_correction;
   using P = PairPoint<D>;
-  if (pack) pair_points_.resize(total);
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::size_t k = 0; k < total; ++k) {
     const double eta_q = quadrature_density(k);
     sum_density_[k] = eta_q;
@@ -242,7 +247,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const std::size_t n = p_.real;
   const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   refresh_active_pairs();
-  prepare_point_factors();
+  size_point_factors();
   pair_dissipation_.resize(upper_index_[n]);
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
@@ -259,8 +264,11 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const auto& h = p_.smoothing_length;
   const auto& inv_eta = inverse_density_;
   const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
+  // One parallel region: the point factors (barrier), the rows, their sums (docs/performance.md,
+  // "Session 6: fewer parallel regions").
 #pragma omp parallel
   {
+    fill_point_factors();
     // Blocks handed out one at a time (prepare_row_blocks()); rows are added up after the barrier.
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
@@ -355,15 +363,30 @@ void SphSystem<D>::kick(double dt) {
   const std::size_t n = p_.real;
   const std::size_t total = p_.velocity.size();
   velocity_old_.resize(total);  // particles and ghosts, v(n-1/2)
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < total; ++k) {
-    velocity_old_[k] = p_.velocity[k];
-    if (k < n) p_.velocity[k] += p_.acceleration[k] * dt;
-  }
-  refresh_ghosts();
+  heat_points_.resize(total);
+  // v(n+1/2) = v(n-1/2) + a dt, and the heating record of each particle (below) in the same pass.
+  const auto kick_particles = [&] {
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < total; ++k) {
+      velocity_old_[k] = p_.velocity[k];
+      if (k < n) {
+        p_.velocity[k] += p_.acceleration[k] * dt;
+        heat_points_[k] = {velocity_old_[k] + p_.velocity[k], p_.mass[k]};
+      }
+    }
+  };
+  // The ghosts and coupling points after refresh_ghosts(): their records too.
+  const auto refresh_other_points = [&] {
+    refresh_ghosts();
+    for (std::size_t k = n; k < total; ++k) heat_points_[k] = {velocity_old_[k] + p_.velocity[k], p_.mass[k]};
+  };
   // After a restart between the force stage and the kick the pair terms are not stored:
   // the force pass at the same x(n), v(n-1/2) gives them again, bit for bit.
-  if (!pair_dissipation_current_ || pair_dissipation_extraction_ != active_extractions_) {
+  const bool stored = pair_dissipation_current_ && pair_dissipation_extraction_ == active_extractions_;
+  if (!stored) {
+#pragma omp parallel
+    kick_particles();
+    refresh_other_points();
     std::vector<Vec<D>> v_new(p_.velocity);
     p_.velocity = velocity_old_;
     force_pass(false);
@@ -381,22 +404,22 @@ void SphSystem<D>::kick(double dt) {
   // internal energy stays conserved (it is reversible over a tension cycle;
   // docs/theory/sph.md). Both are the stored d_ij of force_pass(): the pair
   // gives de_i = 1/2 m_j d_ij . vbar_ij dt and de_j = 1/2 m_i d_ij . vbar_ij dt.
-  const auto& v_old = velocity_old_;
-  const auto& v_new = p_.velocity;
-  const auto& m = p_.mass;
   const auto& d = pair_dissipation_;
   // The blocks of the force pass that stored d (the same extraction; thread_sums.hpp).
   const RowBlocks& blocks = row_blocks_;
   const std::size_t n_blocks = blocks.count();
   heat_sums_.prepare(blocks, n);
-  const std::size_t points = v_new.size();
-  heat_points_.resize(points);
   const HeatPoint* const hp = heat_points_.data();
+  // One parallel region: the kick with the particles' heating records (v(n-1/2) + v(n+1/2) and m
+  // in one 32-byte record, 3-D: one line per neighbour), the ghosts' (one thread), the heating
+  // rows, their sums (docs/performance.md, "Session 6: fewer parallel regions").
 #pragma omp parallel
   {
-    // v(n-1/2) + v(n+1/2) and m of every point in one 32-byte record (3-D): one line per neighbour.
-#pragma omp for schedule(static)
-    for (std::size_t k = 0; k < points; ++k) heat_points_[k] = {v_old[k] + v_new[k], m[k]};
+    if (stored) {
+      kick_particles();
+#pragma omp single
+      refresh_other_points();
+    }
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
       double* const own = heat_sums_.zeroed(blocks, k);
@@ -611,11 +634,7 @@ void SphSystem<D>::update_state(double dt, double time) {
   const auto& eta = p_.planar_density;
   const auto& h = p_.smoothing_length;
   // Scratch kept between steps (no allocation in the cycle): every entry is written before it is read.
-  auto& eta_new = scratch_eta_;
-  auto& h_new = scratch_h_;
   auto& x_end = scratch_x_;
-  eta_new.resize(n);
-  h_new.resize(n);
   x_end.resize(n);
 
   // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
@@ -630,7 +649,7 @@ void SphSystem<D>::update_state(double dt, double time) {
   const bool corrected = options_.kernel_correction;
   if (corrected) compute_correction();
   refresh_active_pairs();
-  prepare_point_factors();
+  size_point_factors();
   const bool volume_form = options_.volume_form;
   const auto& volume = point_volume_;
   const auto& inv_eta = inverse_density_;
@@ -641,8 +660,14 @@ void SphSystem<D>::update_state(double dt, double time) {
   const RowBlocks& blocks = row_blocks_;
   const std::size_t n_blocks = blocks.count();
   kinematic_sums_.prepare(blocks, n);
-#pragma omp parallel
+  std::size_t limited = 0;
+  const MaterialContext ctx{dt, time};
+  // One parallel region from the point factors to the material batches (docs/performance.md,
+  // "Session 6: fewer parallel regions"): the point factors (barrier), the rows (barrier), then
+  // each row's sums, its end-of-step eta, h and x and its material point's inputs in one pass.
+#pragma omp parallel reduction(+ : limited)
   {
+    fill_point_factors();
     // Blocks handed out one at a time, as in force_pass().
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k) {
@@ -729,50 +754,43 @@ void SphSystem<D>::update_state(double dt, double time) {
         }
         p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
         // Continuity, integrated as d ln(eta) so that eta stays positive.
-        eta_new[i] = eta[i] * std::exp(dt * eta_rate);
+        const double eta_new = eta[i] * std::exp(dt * eta_rate);
         double hi = h[i];
         if (options_.variable_smoothing_length) {
           const double h0 = p_.reference_smoothing_length[i];
-          hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new[i], 1.0 / D);
+          hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new, 1.0 / D);
           hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
         }
-        h_new[i] = hi;
+        // Row i's own entries only (the other rows' sums do not read them): end of the step.
+        p_.planar_density[i] = eta_new;
+        p_.smoothing_length[i] = hi;
+        p_.position[i] = x_end[i];
+        if (eta_new < m[i] * kernel_.value(0.0, hi)) ++limited;
+        // The shared constitutive update's inputs: row i's slot in its material's batch.
+        MaterialPoints& pts = batches_[p_.material[i]];
+        const std::size_t slot = p_.slot[i];
+        const double rho = eta_new / geometric_weight(x_end[i]);
+        pts.density_previous[slot] = p_.density[i];
+        pts.density[slot] = rho;
+        pts.strain_rate[slot] = d;
+        pts.spin[slot] = p_.spin[i];
+        pts.artificial_viscosity[slot] = 0.0;  // SPH viscosity is pairwise: its heating is added below
+        pts.characteristic_length[slot] = hi;
+        pts.specific_energy[slot] += p_.heating[i];
+        p_.heating[i] = 0.0;
+        p_.density[i] = rho;
       }
   }
-
-  std::size_t limited = 0;
-#pragma omp parallel for schedule(static) reduction(+ : limited)
-  for (std::size_t i = 0; i < n; ++i) {
-    p_.planar_density[i] = eta_new[i];
-    p_.smoothing_length[i] = h_new[i];
-    p_.position[i] = x_end[i];
-    if (eta_new[i] < m[i] * kernel_.value(0.0, h_new[i])) ++limited;
-  }
-  volume_limited_ = limited;
   refresh_ghosts();
+  volume_limited_ = limited;
   correction_current_ = false;
   pair_dissipation_current_ = false;
 
   // The shared constitutive update, one batch per material.
-  const MaterialContext ctx{dt, time};
   for (std::size_t mat = 0; mat < batches_.size(); ++mat) {
     auto& pts = batches_[mat];
     const auto& members = batch_particles_[mat];
     if (members.empty()) continue;
-#pragma omp parallel for schedule(static)
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      const std::size_t i = members[k];
-      const double rho = p_.planar_density[i] / geometric_weight(x[i]);
-      pts.density_previous[k] = p_.density[i];
-      pts.density[k] = rho;
-      pts.strain_rate[k] = p_.strain_rate[i];
-      pts.spin[k] = p_.spin[i];
-      pts.artificial_viscosity[k] = 0.0;  // SPH viscosity is pairwise: its heating is added below
-      pts.characteristic_length[k] = p_.smoothing_length[i];
-      pts.specific_energy[k] += p_.heating[i];
-      p_.heating[i] = 0.0;
-      p_.density[i] = rho;
-    }
     try {
       materials_[mat]->update(pts, ctx);
     } catch (const NumericalError& error) {
@@ -799,8 +817,10 @@ template void SphSystem<2>::prepare_row_blocks();
 template void SphSystem<3>::prepare_row_blocks();
 template void SphSystem<2>::force_pass(bool);
 template void SphSystem<3>::force_pass(bool);
-template void SphSystem<2>::prepare_point_factors();
-template void SphSystem<3>::prepare_point_factors();
+template void SphSystem<2>::size_point_factors();
+template void SphSystem<3>::size_point_factors();
+template void SphSystem<2>::fill_point_factors();
+template void SphSystem<3>::fill_point_factors();
 template void SphSystem<2>::compute_accelerations();
 template void SphSystem<3>::compute_accelerations();
 template void SphSystem<2>::kick(double);

@@ -208,8 +208,11 @@ class SphSystem {
   // write_rates = false only those are stored (kick() after a restart).
   void force_pass(bool write_rates);
   // eta_q, 1/eta_q and the volume m/eta_q of every point (particles, ghosts, coupling points), and
-  // their packed records for the SIMD pair loops (pair_point.hpp), in one pass.
-  void prepare_point_factors();
+  // their packed records for the SIMD pair loops (pair_point.hpp), in one pass: size_point_factors()
+  // outside a parallel region, then fill_point_factors() by every thread of the region that runs
+  // the pair loop (an orphaned `omp for`: the pass and the pair loop share one region).
+  void size_point_factors();
+  void fill_point_factors();
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
 
   GeometryMode mode_;
@@ -290,7 +293,7 @@ class SphSystem {
   // The pair loops on SIMD lanes (pair_lanes.cpp; without the kernel
   // correction): row i of force_pass() and of update_state()'s kinematics,
   // adding to own (the copy of the sums of the row's block), from the packed records.
-  std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by prepare_point_factors()
+  std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by fill_point_factors()
   void force_row_lanes(std::size_t i, ForceSum* own);
   void kinematics_row_lanes(std::size_t i, KinematicSum* own);
   BlockSums<double> heat_sums_;
@@ -299,8 +302,7 @@ class SphSystem {
     double mass;                  // kg
   };
   std::vector<HeatPoint> heat_points_;
-  std::vector<double> scratch_eta_, scratch_h_;  // update_state(): eta and h at the end of the step
-  std::vector<Vec<D>> scratch_x_;                // update_state(): x(n+1) while the rates use x(n+1/2)
+  std::vector<Vec<D>> scratch_x_;  // update_state(): x(n+1) while the rates use x(n+1/2)
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far
   std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to

@@ -271,6 +271,8 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
   const bool own_hg = !hourglass_coefficient.empty();
   const double hg_kappa = hg.form == HourglassForm::none ? 0.0 : hg.coefficient;
   const bool hg_stiff = hg.form == HourglassForm::stiffness;
+  // Whether any pack holds stiffness-form energy (the colour paths keep one sum per slot then).
+  const bool any_stiff_hg = own_hg ? stiffness_anywhere : hg_stiff && hg_kappa > 0.0;
   const std::size_t ne = size();
 
   // One pack of elements lanes.at(0 .. count - 1) (element_pack.hpp): forces
@@ -428,7 +430,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
       const std::size_t count = colouring_.begin[c + 1] - colouring_.begin[c];
       return single ? (count + W - 1) / W : count;
     };
-    if (stiff_hg) {
+    if (any_stiff_hg) {
       std::size_t all = 0;
       for (std::size_t c = 0; c < colours; ++c) all += slots(c);
       pack_stored_.assign(all, 0.0);
@@ -455,14 +457,14 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
               held += pack(ConsecutiveLanes{e0, static_cast<int>(std::min<std::size_t>(W, e_end - e0))}, f,
                            f_hourglass);
           }
-          if (stiff_hg) pack_stored_[slot_base + static_cast<std::size_t>(k)] = held;
+          if (any_stiff_hg) pack_stored_[slot_base + static_cast<std::size_t>(k)] = held;
         }
         slot_base += static_cast<std::size_t>(n_slots);
       }
     }
     double stored = 0.0;
     for (const double held : pack_stored_) stored += held;  // slot order: any thread count, the same sum
-    if (!stiff_hg) pack_stored_.clear();
+    if (!any_stiff_hg) pack_stored_.clear();
     return stored;
   }
 
@@ -523,6 +525,9 @@ void FemElements<D>::set_hourglass(const std::vector<HourglassControl>& per_elem
     hourglass_coefficient[e] = h.form == HourglassForm::none ? 0.0 : h.coefficient;
     hourglass_stiffness[e] = h.form == HourglassForm::stiffness ? 1 : 0;
   }
+  stiffness_anywhere = false;
+  for (std::size_t e = 0; e < size(); ++e)
+    stiffness_anywhere = stiffness_anywhere || (hourglass_stiffness[e] && hourglass_coefficient[e] > 0.0);
 }
 
 template <int D>

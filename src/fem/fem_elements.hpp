@@ -126,6 +126,7 @@ class FemElements {
   // Own hourglass control (set_hourglass; empty: the `hg` of add_internal_forces for all).
   std::vector<double> hourglass_coefficient;  // FB 1981 kappa; 0 = no control
   std::vector<char> hourglass_stiffness;      // 1: stiffness form, 0: viscous
+  bool stiffness_anywhere = false;            // some element has the stiffness form (set_hourglass)
 
  private:
   bool axisymmetric_ = false;

@@ -107,7 +107,7 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
         continue;
       Point p = candidates[c];
       p.planes[p.image_count++] = static_cast<std::uint8_t>(k);
-      if (axisymmetric_ && k == 0) p.across_axis = !p.across_axis;  // planes_[0] is the axis
+      if (planes_[k].kind == sph::PlaneKind::axis) p.across_axis = !p.across_axis;
       candidates.push_back(p);
       where.push_back(sph::mirror_position(where[c], planes_[k]));
     }

@@ -132,7 +132,7 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
       // The same planes as the particles' mirrors, axis first (SphSystem's order).
       std::vector<sph::MirrorPlane> planes = particle_planes();
       if (mode_ == GeometryMode::axisymmetric)
-        planes.insert(planes.begin(), sph::MirrorPlane{0, 0.0, sph::PlaneKind::symmetry});
+        planes.insert(planes.begin(), sph::MirrorPlane{0, 0.0, sph::PlaneKind::axis});
       join_ = std::make_unique<SphFemJoin<D>>(model, elements_, position_.data(), velocity_.data(),
                                               *particles_, std::move(planes));
     }

@@ -13,10 +13,13 @@
 // it has a full kernel support. Planes are processed in turn and ghosts are
 // themselves mirrored by later planes, which fills corners.
 //
-// The axis r = 0 of an axisymmetric model is a symmetry plane x = 0: the
-// reflected-particle treatment of Petschek & Libersky 1993 (JCP 109, 76,
-// "Cylindrical smoothed particle hydrodynamics") and of Garcia-Senz et al.
-// 2009 (MNRAS 392, 346), section 2.3.
+// The axis r = 0 of an axisymmetric model is a symmetry plane x = 0
+// (PlaneKind::axis): the reflected-particle treatment of Petschek & Libersky
+// 1993 (JCP 109, 76, "Cylindrical smoothed particle hydrodynamics") and of
+// Garcia-Senz et al. 2009 (MNRAS 392, 346), section 2.3. Its images stand at
+// r < 0, where the ring weight 2 pi r is negative: in the volume form they
+// carry their stress terms negated (SphSystem::refresh_ghosts, SphFemJoin::fill;
+// docs/theory/sph.md, "The first columns next to the axis").
 #include <cstdint>
 #include <vector>
 
@@ -25,7 +28,7 @@
 
 namespace camouflet::sph {
 
-enum class PlaneKind { symmetry, wall };
+enum class PlaneKind { symmetry, wall, axis };  // axis: a symmetry plane at r = 0 (r-z)
 
 struct MirrorPlane {
   int axis = 0;           // normal direction: 0 = x (r), 1 = y (z), 2 = z

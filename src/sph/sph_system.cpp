@@ -34,7 +34,7 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
     tensile_power_integer_ = static_cast<int>(power);
   // The axis of revolution r = 0 reflects particles (mirror_boundary.hpp).
   if (mode_ == GeometryMode::axisymmetric)
-    planes_.insert(planes_.begin(), MirrorPlane{0, 0.0, PlaneKind::symmetry});
+    planes_.insert(planes_.begin(), MirrorPlane{0, 0.0, PlaneKind::axis});
 
   const auto& src = model.particles;
   const std::size_t n = src.count();
@@ -163,8 +163,8 @@ void SphSystem<D>::gather_material_state() {
 template <int D>
 void SphSystem<D>::refresh_ghosts() {
   const std::size_t n = p_.real;
-  // planes_[0] is the axis. The density form (volume_form = false) keeps |r| (sph_options.hpp).
-  const bool axis_plane = mode_ == GeometryMode::axisymmetric && options_.volume_form;
+  // The density form (volume_form = false) keeps |r| on the axis images (sph_options.hpp).
+  const bool signed_images = options_.volume_form;
   image_sign_.resize(ghosts_.size());
   for (std::size_t g = 0; g < ghosts_.size(); ++g) {
     const std::size_t k = n + g, s = ghosts_[g].source;
@@ -181,7 +181,7 @@ void SphSystem<D>::refresh_ghosts() {
     p_.stress_term[k] = mirror_tensor(p_.stress_term[s], plane.axis);
     p_.tensile_term[k] = mirror_tensor(p_.tensile_term[s], plane.axis);
     image_sign_[g] = s >= n ? image_sign_[s - n] : 1;  // a ghost of a ghost inherits its source's side
-    if (axis_plane && ghosts_[g].plane == 0) {
+    if (signed_images && plane.kind == PlaneKind::axis) {
       image_sign_[g] = static_cast<signed char>(-image_sign_[g]);
       // An image across the axis stands at r < 0: its ring weight w = 2 pi r is odd there,
       // so that r sigma continues smoothly (linearly) across the axis and the kernel sums of

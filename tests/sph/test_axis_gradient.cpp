@@ -82,31 +82,35 @@ TEST(SphAxis, HydrostaticGradientIsTheSameInEveryColumn) {
 
 namespace {
 
-// A plane wave down an r-z column with a roller at r = R (uniaxial strain: an exact plane
-// solution): the top slab starts moving down at `speed`. Returns per column the mean v_z and
-// u_z of the particles in a band at mid-height at t_end.
-std::map<int, ColumnAcceleration> plane_wave_columns(double speed, double t_end, bool gas) {
-  // (radial: here the mean u_z, axial: the mean v_z)
+// A plane shock down an r-z gas column with a roller at r = R (uniaxial strain: an exact plane
+// solution): the top slab starts moving down at `speed`. Per column, the mean axial velocity
+// and displacement of the particles in a band at mid-height at t_end.
+struct ColumnMotion {
+  double velocity = 0.0, displacement = 0.0;  // m/s, m (axial)
+  int count = 0;
+};
+
+std::map<int, ColumnMotion> plane_shock_columns(double speed, double t_end) {
   Model model;
   model.run.mode = GeometryMode::axisymmetric;
   const double dx = 0.02, radius = 0.2;
-  auto material = gas ? test::ideal_gas("m", 1000.0, 1.4, 1e5) : test::elastic_solid("m", 2000.0, 4e9, 2e9);
-  test::add_sph_part(model, "m", material, test::box_fill({0, 0, 0}, {radius, 2, 0}, dx));
+  test::add_sph_part(model, "gas", test::ideal_gas("gas", 1000.0, 1.4, 1e5),
+                     test::box_fill({0, 0, 0}, {radius, 2, 0}, dx));
   SphSystem<2> sph(model, SphOptions{}, {sph::MirrorPlane{0, radius, sph::PlaneKind::symmetry}});
   auto& p = sph.particles();
   for (std::size_t i = 0; i < sph.size(); ++i)
     if (p.position[i][1] > 1.6) p.velocity[i][1] = -speed;
   test::run_leapfrog_until(sph, t_end, 0.3);
-  std::map<int, ColumnAcceleration> columns;
+  std::map<int, ColumnMotion> columns;
   for (std::size_t i = 0; i < sph.size(); ++i) {
     const double z0 = p.position[i][1] - p.displacement[i][1];
     if (z0 < 0.9 || z0 > 1.3) continue;
-    ColumnAcceleration& c = columns[static_cast<int>((p.position[i][0] - p.displacement[i][0]) / dx)];
-    c.axial += p.velocity[i][1];
-    c.radial += p.displacement[i][1];
+    ColumnMotion& c = columns[static_cast<int>((p.position[i][0] - p.displacement[i][0]) / dx)];
+    c.velocity += p.velocity[i][1];
+    c.displacement += p.displacement[i][1];
     ++c.count;
   }
-  for (auto& [k, c] : columns) c.axial /= c.count, c.radial /= c.count;
+  for (auto& [k, c] : columns) c.velocity /= c.count, c.displacement /= c.count;
   return columns;
 }
 
@@ -116,10 +120,12 @@ TEST(SphAxis, PlaneShockMovesTheFirstColumnLikeTheSecond) {
   // A 200 m/s piston into gas at rest, along the axis: a plane shock, the same in every column.
   // With |r| ring weights on the images the first column had moved 17 % further than the second
   // after 1.2 ms (the axis jet of issue 8 in its simplest form).
-  const auto columns = plane_wave_columns(200.0, 1.2e-3, true);
-  for (const auto& [k, c] : columns) std::printf("column %2d: v_z %+.4f  u_z %+.5e\n", k, c.axial, c.radial);
+  const auto columns = plane_shock_columns(200.0, 1.2e-3);
+  for (const auto& [k, c] : columns)
+    std::printf("column %2d: v_z %+.4f  u_z %+.5e\n", k, c.velocity, c.displacement);
   test::verify(
       {"r-z SPH, plane shock along the axis (gas, piston 200 m/s, 1.2 ms): axial displacement of the "
        "first particle column at mid-height",
-       "the second column's (a plane wave)", columns.at(1).radial, columns.at(0).radial, 0.05, true, "m"});
+       "the second column's (a plane wave)", columns.at(1).displacement, columns.at(0).displacement, 0.05,
+       true, "m"});
 }

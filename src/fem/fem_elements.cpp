@@ -253,6 +253,20 @@ double FemElements<D>::volume_of(const double* x, std::size_t e) const {
 }
 
 template <int D>
+void FemElements<D>::set_speeds(const double* v) {
+  for (std::size_t e = 0; e < size(); ++e) {
+    double s2 = 0.0;
+    for (int a = 0; a < nodes; ++a) {
+      const double* va = &v[static_cast<std::size_t>(connectivity[e * nodes + static_cast<std::size_t>(a)]) * D];
+      double n2 = 0.0;
+      for (int i = 0; i < D; ++i) n2 += va[i] * va[i];
+      s2 = std::max(s2, n2);
+    }
+    speed[e] = std::sqrt(s2);
+  }
+}
+
+template <int D>
 void FemElements<D>::set_assembly(ForceAssembly assembly) {
   assembly_ = assembly;
   const std::size_t block = assembly == ForceAssembly::colour_blocks ? colour_block_size(size()) : 1;

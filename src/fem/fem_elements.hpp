@@ -105,6 +105,10 @@ class FemElements {
   KinematicsResult kinematics(const double* x, const double* v, double dt, const ViscosityControl& viscosity,
                               std::vector<MaterialPoints>& batches);
 
+  // The largest node speed of each element from the velocities v (n*D): the
+  // |v| of the first step's l/(c+|v|) vote, before any kinematics has run.
+  void set_speeds(const double* v);
+
   // Element volume (m^3; per unit depth in plane strain, the full ring in
   // axisymmetric mode) of one element at positions x.
   double volume_of(const double* x, std::size_t e) const;

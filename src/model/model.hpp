@@ -46,7 +46,7 @@ struct RunControl {
   double viscosity_linear = 0.06;
   HourglassForm hourglass = HourglassForm::viscous;
   double hourglass_coefficient = 0.1;
-  double energy_error_limit = std::numeric_limits<double>::infinity();  // relative; stop when exceeded
+  double energy_error_limit = 0.05;  // relative; warn past half, stop when exceeded (solver/energy_guard.hpp)
   // Domain box (m; axisymmetric r, z): a node or particle leaving it stops the run. Unbounded by default.
   std::array<double, 3> domain_min{-std::numeric_limits<double>::infinity(),
                                    -std::numeric_limits<double>::infinity(),

@@ -41,12 +41,13 @@ double at_or_zero(std::span<const T> field, std::int64_t index) {
 
 void push_stress(std::vector<double>& out, std::span<const SymTensor> stress,
                  std::span<const double> pressure, std::span<const double> plastic,
-                 std::span<const double> damage, std::int64_t index) {
+                 std::span<const double> damage, std::span<const double> temperature, std::int64_t index) {
   const SymTensor s = stress.empty() ? SymTensor{} : stress[static_cast<std::size_t>(index)];
   out.insert(out.end(), {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx});
   out.push_back(at_or_zero(pressure, index));
   out.push_back(at_or_zero(plastic, index));
   out.push_back(at_or_zero(damage, index));
+  out.push_back(at_or_zero(temperature, index));
 }
 
 // Cubic B-spline W(r, h) (Monaghan 1992, eq. 2.6), support 2h, in `dim` dimensions.
@@ -103,17 +104,18 @@ void sample_interpolated(const LocatedGauge& gauge, const FieldSnapshot& s, std:
   vector_field(s.particle_acceleration);
   // A point no particle covers any more (the material moved away) samples NaN: nothing to interpolate.
   SymTensor sigma{};
-  double pressure = 0.0, plastic = 0.0, damage = 0.0;
+  double pressure = 0.0, plastic = 0.0, damage = 0.0, temperature = 0.0;
   for (const auto& [p, wp] : w) {
     if (!s.particle_stress.empty()) sigma += s.particle_stress[p] * wp;
     pressure += wp * at_or_zero(s.particle_pressure, static_cast<std::int64_t>(p));
     plastic += wp * at_or_zero(s.particle_plastic_strain, static_cast<std::int64_t>(p));
     damage += wp * at_or_zero(s.particle_damage, static_cast<std::int64_t>(p));
+    temperature += wp * at_or_zero(s.particle_temperature, static_cast<std::int64_t>(p));
   }
   const double inv = total > 0.0 ? 1.0 / total : std::numeric_limits<double>::quiet_NaN();
   sigma = sigma * inv;
   out.insert(out.end(), {sigma.xx, sigma.yy, sigma.zz, sigma.xy, sigma.yz, sigma.zx});
-  out.insert(out.end(), {pressure * inv, plastic * inv, damage * inv});
+  out.insert(out.end(), {pressure * inv, plastic * inv, damage * inv, temperature * inv});
 }
 
 }  // namespace
@@ -123,7 +125,7 @@ std::vector<std::string> gauge_quantities(int dim) {
   for (const char* v : {"position", "displacement", "velocity", "acceleration"})
     for (int i = 0; i < dim; ++i) q.push_back(fmt::format("{}_{}", v, axis_names[i]));
   for (const char* s : {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx",
-                        "pressure", "plastic_strain", "damage"})
+                        "pressure", "plastic_strain", "damage", "temperature"})
     q.emplace_back(s);
   return q;
 }
@@ -189,7 +191,7 @@ void sample_gauge(const LocatedGauge& gauge, const FieldSnapshot& s, std::vector
     for (auto field : {s.node_position, s.node_displacement, s.node_velocity, s.node_acceleration})
       push_interpolated(out, field, s.connectivity, gauge.element, npe, n, dim);
     push_stress(out, s.element_stress, s.element_pressure, s.element_plastic_strain, s.element_damage,
-                gauge.element);
+                s.element_temperature, gauge.element);
     return;
   }
   if (gauge.interpolate) return sample_interpolated(gauge, s, out);
@@ -197,7 +199,7 @@ void sample_gauge(const LocatedGauge& gauge, const FieldSnapshot& s, std::vector
        {s.particle_position, s.particle_displacement, s.particle_velocity, s.particle_acceleration})
     push_vector(out, field, gauge.particle, dim);
   push_stress(out, s.particle_stress, s.particle_pressure, s.particle_plastic_strain, s.particle_damage,
-              gauge.particle);
+              s.particle_temperature, gauge.particle);
 }
 
 }  // namespace camouflet

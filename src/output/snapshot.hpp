@@ -30,6 +30,7 @@ struct FieldSnapshot {
   std::span<const SymTensor> element_stress;       // Pa, Cauchy sigma = s - p I (tension positive)
   std::span<const double> element_plastic_strain;  // -
   std::span<const double> element_damage;          // -
+  std::span<const double> element_temperature;     // K; 0 where the material carries no temperature
   std::span<const int> element_material;           // index into Model::materials
 
   // SPH particles (empty until the SPH issue)
@@ -42,6 +43,7 @@ struct FieldSnapshot {
   std::span<const SymTensor> particle_stress;
   std::span<const double> particle_plastic_strain;
   std::span<const double> particle_damage;
+  std::span<const double> particle_temperature;  // K; 0 where the material carries no temperature
   std::span<const int> particle_material;
   std::span<const double> particle_smoothing_length;  // m
   std::span<const double> particle_mass;              // kg (axisymmetric: mass of the ring)

@@ -125,6 +125,7 @@ void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& s) {
   scalar_array(b, "Float64", "pressure", s.element_pressure, m);
   tensor_array(b, "stress", s.element_stress, m);
   scalar_array(b, "Float64", "plastic_strain", s.element_plastic_strain, m);
+  scalar_array(b, "Float64", "temperature", s.element_temperature, m);
   scalar_array(b, "Float64", "damage", s.element_damage, m);
   scalar_array(b, "Int32", "material", s.element_material, m);
   b += "      </CellData>\n";
@@ -148,6 +149,7 @@ void write_particle_vtu(const std::filesystem::path& path, const FieldSnapshot& 
   scalar_array(b, "Float64", "pressure", s.particle_pressure, n);
   tensor_array(b, "stress", s.particle_stress, n);
   scalar_array(b, "Float64", "plastic_strain", s.particle_plastic_strain, n);
+  scalar_array(b, "Float64", "temperature", s.particle_temperature, n);
   scalar_array(b, "Float64", "damage", s.particle_damage, n);
   scalar_array(b, "Int32", "material", s.particle_material, n);
   scalar_array(b, "Float64", "smoothing_length", s.particle_smoothing_length, n);

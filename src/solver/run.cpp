@@ -11,6 +11,7 @@
 #include "output/progress.hpp"
 #include "output/run_output.hpp"
 #include "solver/bar_output.hpp"
+#include "solver/energy_guard.hpp"
 #include "solver/energy_output.hpp"
 #include "solver/interrupt.hpp"
 #include "solver/run_checkpoints.hpp"
@@ -40,6 +41,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     bar_csv.resume(solver.time(), solver.bars());
     energy_csv.resume(solver);
   }
+  EnergyGuard<D> energy_guard(model.run, solver);
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
   RunSummary summary;
@@ -80,13 +82,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       const EnergyBalance& energy = solver.energy();
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());
-      if (energy.relative_error > run.energy_error_limit) {
-        NumericalError error(EntityKind::model, 0, "energy balance",
-                             fmt::format("relative energy error {:.3e} exceeds energy_error_limit {:.3e}",
-                                         energy.relative_error, run.energy_error_limit));
-        error.set_context(solver.cycle(), solver.time(), "");
-        throw error;
-      }
+      energy_guard.after_cycle(solver);
     }
   } catch (const NumericalError& error) {
     progress.done();

@@ -140,6 +140,9 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   }
   contact_ = SlidingContact<D>(model);
 
+  // The first step votes with the initial velocities like every later one
+  // (the kinematics that measure |v| have not run yet).
+  elements_.set_speeds(velocity_.data());
   gather_element_state();
   choose_time_step();
   if (model.run.initial_dt > 0.0) {
@@ -526,12 +529,14 @@ FieldSnapshot Solver<D>::snapshot() const {
   element_pressure_.resize(ne);
   element_plastic_strain_.resize(ne);
   element_damage_.resize(ne);
+  element_temperature_.resize(ne);
   for (std::size_t e = 0; e < ne; ++e) {
     const MaterialPoints& pts = batches_[static_cast<std::size_t>(elements_.material[e])];
     const std::size_t p = elements_.point[e];
     element_pressure_[e] = pts.pressure[p];
     element_plastic_strain_[e] = pts.plastic_strain[p];
     element_damage_[e] = pts.damage[p];
+    element_temperature_[e] = pts.temperature[p];
   }
   FieldSnapshot s;
   s.dimension = D;
@@ -549,6 +554,7 @@ FieldSnapshot Solver<D>::snapshot() const {
   s.element_stress = elements_.stress;
   s.element_plastic_strain = element_plastic_strain_;
   s.element_damage = element_damage_;
+  s.element_temperature = element_temperature_;
   s.element_material = elements_.material;
   if (particles_) particles_->fill_snapshot(s);
   return s;

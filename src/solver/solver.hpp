@@ -146,7 +146,8 @@ class Solver {
   ViscosityControl viscosity_;
 
   // Snapshot buffers gathered from the material batches.
-  mutable std::vector<double> element_pressure_, element_plastic_strain_, element_damage_;
+  mutable std::vector<double> element_pressure_, element_plastic_strain_, element_damage_,
+      element_temperature_;
 
   double time_ = 0.0;
   std::int64_t cycle_ = 0;

@@ -52,6 +52,7 @@ void SphSystem<D>::visit_state(StateVisitor& v) {
   visit(v, "pressure", p.pressure);
   visit(v, "plastic_strain", p.plastic_strain);
   visit(v, "damage", p.damage);
+  visit(v, "temperature", p.temperature);
   visit(v, "material", p.material);
   visit(v, "part", p.part);
   visit(v, "slot", p.slot);

@@ -60,6 +60,7 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   p_.pressure.resize(n);
   p_.plastic_strain.resize(n);
   p_.damage.resize(n);
+  p_.temperature.resize(n);
   p_.material.resize(n);
   p_.part.resize(n);
   p_.slot.resize(n);
@@ -148,6 +149,7 @@ void SphSystem<D>::gather_material_state() {
     p_.wave_speed[i] = pts.wave_speed(k);
     p_.plastic_strain[i] = pts.plastic_strain[k];
     p_.damage[i] = pts.damage[k];
+    p_.temperature[i] = pts.temperature[k];
     p_.stress_term[i] = sigma * (geometric_weight(p_.position[i]) / p_.planar_density[i]);
     if (!std::isfinite(p + sigma.xx + sigma.yy + sigma.xy + p_.wave_speed[i])) ++bad;
   }
@@ -269,6 +271,7 @@ void SphSystem<D>::sort_by_cell() {
   permute(p.pressure, order);
   permute(p.plastic_strain, order);
   permute(p.damage, order);
+  permute(p.temperature, order);
   permute(p.material, order);
   permute(p.part, order);
   permute(p.slot, order);
@@ -375,6 +378,7 @@ void SphSystem<D>::fill_snapshot(FieldSnapshot& s) const {
     s.particle_stress = a.stress;
     s.particle_plastic_strain = a.plastic_strain;
     s.particle_damage = a.damage;
+    s.particle_temperature = a.temperature;
     s.particle_material = a.material;
     s.particle_smoothing_length = std::span<const double>(a.smoothing_length.data(), n);
     s.particle_neighbour_count = a.neighbour_count;
@@ -396,6 +400,7 @@ void SphSystem<D>::fill_snapshot(FieldSnapshot& s) const {
     by_id(c.stress, p_.stress);
     by_id(c.plastic_strain, p_.plastic_strain);
     by_id(c.damage, p_.damage);
+    by_id(c.temperature, p_.temperature);
     by_id(c.material, p_.material);
     by_id(c.smoothing_length, p_.smoothing_length);
     by_id(c.neighbour_count, p_.neighbour_count);

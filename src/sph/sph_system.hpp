@@ -91,6 +91,7 @@ struct ParticleArrays {
   std::vector<double> pressure;   // Pa
   std::vector<double> plastic_strain;
   std::vector<double> damage;
+  std::vector<double> temperature;  // K, copied from the material point like the damage
   std::vector<int> material;             // index into Model::materials
   std::vector<int> part;                 // index into Model::parts
   std::vector<std::uint32_t> slot;       // index in the material's batch
@@ -239,7 +240,7 @@ class SphSystem {
   // Copies in id order for fill_snapshot() once the memory order differs.
   struct IdOrderCopy {
     std::vector<Vec<D>> position, displacement, velocity, acceleration;
-    std::vector<double> density, pressure, plastic_strain, damage, smoothing_length, mass;
+    std::vector<double> density, pressure, plastic_strain, damage, temperature, smoothing_length, mass;
     std::vector<SymTensor> stress;
     std::vector<int> material, neighbour_count;
   };

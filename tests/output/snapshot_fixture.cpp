@@ -36,6 +36,7 @@ SnapshotFixture SnapshotFixture::distorted(int dim, int n) {
         f.stress.push_back(SymTensor{-1.0 * static_cast<double>(e), 2.0, 3.0, 4.0, 5.0, 6.0});
         f.plastic.push_back(0.01 * static_cast<double>(e));
         f.damage.push_back(0.0);
+        f.temperature.push_back(300.0);
         f.material.push_back(static_cast<int>(e % 2));
       }
   f.displacement.assign(f.position.size(), 0.0);
@@ -81,6 +82,7 @@ FieldSnapshot SnapshotFixture::view(double time, std::int64_t cycle) const {
   s.element_stress = stress;
   s.element_plastic_strain = plastic;
   s.element_damage = damage;
+  s.element_temperature = temperature;
   s.element_material = material;
   return s;
 }

@@ -13,7 +13,7 @@ struct SnapshotFixture {
   int dim = 2;
   std::vector<double> position, displacement, velocity, acceleration;
   std::vector<std::int64_t> connectivity;
-  std::vector<double> density, pressure, plastic, damage;
+  std::vector<double> density, pressure, plastic, damage, temperature;
   std::vector<SymTensor> stress;
   std::vector<int> material;
 

@@ -133,8 +133,9 @@ TEST(OutputFiles, FolderReadsBack) {
   std::getline(csv, line);
   const std::size_t columns = static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1;
   EXPECT_EQ(line.rfind("time_s,a.position_x,a.position_y,a.displacement_x", 0), 0u) << line;
-  EXPECT_NE(line.find("b.stress_zx,b.pressure,b.plastic_strain,b.damage"), std::string::npos) << line;
-  EXPECT_EQ(columns, 1 + 2 * (4 * 2 + 9));
+  EXPECT_NE(line.find("b.stress_zx,b.pressure,b.plastic_strain,b.damage,b.temperature"), std::string::npos)
+      << line;
+  EXPECT_EQ(columns, 1 + 2 * (4 * 2 + 10));
   int rows = 0;
   double last_time = -1.0;
   while (std::getline(csv, line)) {
@@ -162,7 +163,7 @@ TEST(OutputFiles, FolderReadsBack) {
     EXPECT_EQ(x.array_tokens.at("types"), 9u);
     EXPECT_EQ(x.array_tokens.at("stress"), 9u * 6);
     EXPECT_EQ(x.array_components.at("stress"), 6);
-    for (const char* cell : {"density", "pressure", "plastic_strain", "damage", "material"})
+    for (const char* cell : {"density", "pressure", "plastic_strain", "damage", "temperature", "material"})
       EXPECT_EQ(x.array_tokens.at(cell), 9u) << cell;
   }
   EXPECT_FALSE(fs::exists(dir / "fields_0003.vtu"));

@@ -40,5 +40,9 @@ TEST(TaylorBarLong, OfhcCopperAt190MetresPerSecond) {
       {"Taylor impact, OFHC copper (JC 1983 constants), 190 m/s, axisymmetric FEM 10 cells/radius: foot "
        "diameter (model-test difference of the JC copper set, see docs)",
        "test 1.78 x 7.62 mm (Johnson & Cook 1983)", 1.78 * 7.62e-3, r.foot_diameter, 0.08, true, "m"});
+  test::verify({"Taylor impact, OFHC copper, 190 m/s: peak temperature rise of the field",
+                "chi w_p / C_v of the same element's plastic work (Taylor-Quinney, chi = 0.9)",
+                r.peak_temperature_from_work - r.room_temperature, r.peak_temperature - r.room_temperature, 0.02,
+                true, "K"});
   EXPECT_LT(r.energy_error, 0.01);
 }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/fem_models.hpp"
+#include "materials/johnson_cook.hpp"
 #include "materials/registry.hpp"
 #include "solver/solver.hpp"
 
@@ -33,6 +34,13 @@ struct TaylorResult {
   double energy_error = 0.0;      // relative energy balance error at the end
   double max_plastic_strain = 0.0;
   double max_damage = 0.0;  // Johnson-Cook failure of the preset (1 = failed)
+  // The hottest element of the final field (the snapshot the output writes),
+  // and the temperature the plastic work at that element predicts,
+  // T0 + chi w_p / C_v with w_p = sum sigma_eq d(eps_p) / rho integrated here
+  // from the stress and plastic strain of every cycle (Taylor-Quinney).
+  double peak_temperature = 0.0;            // K
+  double peak_temperature_from_work = 0.0;  // K
+  double room_temperature = 0.0;            // K
   std::int64_t cycles = 0;
 };
 
@@ -69,9 +77,16 @@ inline TaylorResult run_taylor_bar(const TaylorSpec& spec) {
 
   TaylorResult r;
   double weight = 0.0;
+  const auto* jc = dynamic_cast<const JohnsonCookStrength*>(model.materials[0].material->strength());
+  const MaterialPoints& pts = solver.batches()[0];
+  std::vector<double> plastic_work(pts.size(), 0.0), plastic_before = pts.plastic_strain;  // J/kg, -
   while (solver.time() < spec.end_time) {
     solver.limit_next_step(spec.end_time - solver.time());
     solver.step();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      plastic_work[i] += von_mises(pts.deviator[i]) * (pts.plastic_strain[i] - plastic_before[i]) / pts.density[i];
+      plastic_before[i] = pts.plastic_strain[i];
+    }
     if (solver.time() > spec.average_from) {
       const double dt = solver.time_step_limit().dt;
       double foot = 0.0;
@@ -88,13 +103,24 @@ inline TaylorResult run_taylor_bar(const TaylorSpec& spec) {
   for (double e : solver.batches()[0].plastic_strain)
     r.max_plastic_strain = std::max(r.max_plastic_strain, e);
   for (double d : solver.batches()[0].damage) r.max_damage = std::max(r.max_damage, d);
+  const FieldSnapshot fields = solver.snapshot();
+  std::size_t hottest = 0;
+  for (std::size_t e = 0; e < fields.element_temperature.size(); ++e)
+    if (fields.element_temperature[e] > fields.element_temperature[hottest]) hottest = e;
+  r.peak_temperature = fields.element_temperature[hottest];
+  if (jc) {
+    const JohnsonCookParameters& p = jc->parameters();
+    r.room_temperature = p.room_temperature;
+    r.peak_temperature_from_work = p.room_temperature + p.taylor_quinney * plastic_work[hottest] / p.specific_heat;
+  }
   r.cycles = solver.cycle();
   std::printf(
       "Taylor %s, V = %.0f m/s, %d cells across: L = %.3f mm (L/L0 = %.4f), foot D = %.3f mm, "
-      "max eps_p = %.3f, max damage %.3f, KE left %.2e, energy error %.2e, %lld cycles\n",
+      "max eps_p = %.3f, max damage %.3f, peak T = %.1f K (from the plastic work %.1f K), KE left %.2e, "
+      "energy error %.2e, %lld cycles\n",
       spec.preset.c_str(), spec.velocity, spec.radial_cells, r.final_length * 1e3,
       r.final_length / spec.length, r.foot_diameter * 1e3, r.max_plastic_strain, r.max_damage,
-      r.kinetic_fraction, r.energy_error, static_cast<long long>(r.cycles));
+      r.peak_temperature, r.peak_temperature_from_work, r.kinetic_fraction, r.energy_error, static_cast<long long>(r.cycles));
   return r;
 }
 

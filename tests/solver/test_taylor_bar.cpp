@@ -26,6 +26,12 @@ TEST(TaylorBar, Steel4340At208MetresPerSecondAgainstJohnsonCook1983Test) {
       {"Taylor impact, 4340 steel (JC 1983 constants), 208 m/s, axisymmetric FEM 6 cells/radius: foot "
        "diameter",
        "test 11.1 mm (Johnson & Cook 1983)", 11.1e-3, r.foot_diameter, 0.05, true, "m"});
+  // The temperature field: its peak rise against the Taylor-Quinney heat of the plastic work.
+  test::verify({"Taylor impact, 4340 steel, 208 m/s: peak temperature rise of the field",
+                "chi w_p / C_v of the same element's plastic work (Taylor-Quinney, chi = 0.9)",
+                r.peak_temperature_from_work - r.room_temperature, r.peak_temperature - r.room_temperature, 0.02,
+                true, "K"});
+  EXPECT_GT(r.peak_temperature - r.room_temperature, 50.0) << "the foot must heat visibly";
   EXPECT_LT(r.kinetic_fraction, 0.02) << "the rod must have stopped (elastic ringing only)";
   EXPECT_LT(r.energy_error, 0.01);
 }

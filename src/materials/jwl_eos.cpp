@@ -53,10 +53,12 @@ void JwlEos::evaluate(MaterialPoints& pts, const MaterialContext& ctx, bool comm
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     // The fraction never decreases (a point that has burnt stays burnt).
-    const double f = std::max(burnt[i], burn_fraction(ctx.time, lit[i], detonation_velocity_,
-                                                      burn_width_factor_, pts.characteristic_length[i]));
-    if (commit) burnt[i] = f;
     const double rho = pts.density[i];
+    const double f = std::max({burnt[i],
+                               burn_fraction(ctx.time, lit[i], detonation_velocity_, burn_width_factor_,
+                                             pts.characteristic_length[i]),
+                               volume_burn_fraction(p_.density / rho, cj_.relative_volume)});
+    if (commit) burnt[i] = f;
     const double e = pts.specific_energy[i];
     pts.pressure[i] = f * products_pressure(rho, e);
     pts.sound_speed[i] = std::sqrt(std::max(0.0, products_sound_speed_squared(rho, e)));

@@ -11,10 +11,11 @@
 //                                the points is e = e0 / rho0 (J/kg), so that
 //                                the JWL term w E / V becomes w rho e
 //   detonation_velocity  m/s     optional, default: the computed CJ velocity
-//   burn_width_factor    -       n_burn of the burn ramp, default 3
+//   burn_width_factor    -       n_burn of the burn ramp, default 1.5
 //
-// Unburnt explosive carries no pressure: p = F p_JWL(rho, e) with the burn
-// fraction F (LS-DYNA *MAT_HIGH_EXPLOSIVE_BURN does the same). It carries its
+// p = F p_JWL(rho, e) with the burn fraction F = max(time ramp, volumetric
+// fraction) (programmed_burn.hpp; LS-DYNA *MAT_HIGH_EXPLOSIVE_BURN does the
+// same): uncompressed unburnt explosive carries no pressure. It carries its
 // full chemical energy e0 / rho0 from the start; the sound speed is that of the
 // products at the current state whatever F, so the time step never grows when
 // the front arrives.

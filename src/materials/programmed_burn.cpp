@@ -26,4 +26,9 @@ double burn_fraction(double time, double lighting_time, double detonation_veloci
   return std::min(1.0, (time - lighting_time) * detonation_velocity / width);
 }
 
+double volume_burn_fraction(double relative_volume, double cj_relative_volume) {
+  if (!(relative_volume < 1.0)) return 0.0;
+  return std::min(1.0, (1.0 - relative_volume) / (1.0 - cj_relative_volume));
+}
+
 }  // namespace camouflet

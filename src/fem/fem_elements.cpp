@@ -553,7 +553,7 @@ bool FemElements<D>::any_viscous_hourglass(const HourglassControl& hg) const {
 }
 
 template <int D>
-KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, double dt,
+KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, const double* v_previous, double dt,
                                             const ViscosityControl& visc,
                                             std::vector<MaterialPoints>& batches) {
   constexpr int N = nodes;
@@ -571,8 +571,8 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
     bool any = false;
     for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
     if (!any) continue;
-    PackedNodes<D> xe, ve, xh, b;
-    gather_packs<D, 2>({x, v}, connectivity.data(), ConsecutiveLanes{e0, count}, {&xe, &ve});
+    PackedNodes<D> xe, ve, ae, xh, b;
+    gather_packs<D, 3>({x, v, v_previous}, connectivity.data(), ConsecutiveLanes{e0, count}, {&xe, &ve, &ae});
     Pack speed2{};
     for (int a = 0; a < N; ++a) {
       Pack s2{};
@@ -620,8 +620,31 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, do
                w_zx = 0.5 * (L[2][0] - L[0][2]);
     const Pack rho = load_pack(mass.data(), e0, count) / vol;
     // Artificial bulk viscosity, compression only (von Neumann-Richtmyer
-    // quadratic + Landshoff linear): q = rho l (C_q^2 l |tr D| + C_l c) |tr D|.
-    const Pack div = L[0][0] + L[1][1] + L[2][2];
+    // quadratic + Landshoff linear): q = rho l (C_q^2 l |d| + C_l c) |d| with
+    // d the strain rate along the element's acceleration a (Wilkins 1980,
+    // J. Comput. Phys. 36, 281): d = a.L.a / |a|^2, with a the nodes' mean
+    // velocity change over the step (constraints included: a driven boundary
+    // orients q from its first step); 0 where no node has changed velocity
+    // (the first step from an initial velocity jump takes no q). A shock
+    // decelerates the material along its normal, so d is the compression
+    // across it; a smooth convergent flow (a cylinder or sphere of gas
+    // coasting inwards) compresses across the flow, not along a, and takes
+    // no q, where tr D would heat it (docs/theory/fem.md, "Artificial
+    // viscosity"). The in-plane part only in r-z: a has no hoop component.
+    Pack div{};
+    if (visc.along_acceleration) {
+      Pack abar[D] = {}, a2{};
+      for (int i = 0; i < D; ++i) {
+        for (int n = 0; n < N; ++n) abar[i] += ve[i][n] - ae[i][n];
+        a2 += abar[i] * abar[i];
+      }
+      Pack ala{};
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) ala += abar[i] * L[i][j] * abar[j];
+      for (int l = 0; l < W; ++l) div[l] = a2[l] > 0.0 ? ala[l] / a2[l] : 0.0;
+    } else {
+      div = L[0][0] + L[1][1] + L[2][2];
+    }
     const Pack q_all = rho * le *
                        (visc.quadratic * visc.quadratic * le * -div +
                         visc.linear * load_pack(wave_speed.data(), e0, count)) *

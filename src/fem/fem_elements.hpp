@@ -19,6 +19,9 @@ namespace camouflet {
 struct ViscosityControl {
   double quadratic = 1.5;  // c_quadratic
   double linear = 0.06;    // c_linear
+  // The compression q acts on: the strain rate along the element's
+  // acceleration (Wilkins 1980), or the volumetric rate tr D.
+  bool along_acceleration = true;
 };
 
 // How add_internal_forces assembles nodal forces on several threads without
@@ -102,8 +105,11 @@ class FemElements {
   // From x (t_{n+1}) and v (t_{n+1/2}): new volume and density, strain rate
   // and spin at mid-step, q, characteristic length and speed; written into
   // the element arrays and the material batches.
-  KinematicsResult kinematics(const double* x, const double* v, double dt, const ViscosityControl& viscosity,
-                              std::vector<MaterialPoints>& batches);
+  // v_previous: the velocities at t_(n-1/2) (n*D); v - v_previous, the
+  // velocity change the step applied (constraints included), orients q
+  // (ViscosityControl).
+  KinematicsResult kinematics(const double* x, const double* v, const double* v_previous, double dt,
+                              const ViscosityControl& viscosity, std::vector<MaterialPoints>& batches);
 
   // The largest node speed of each element from the velocities v (n*D): the
   // |v| of the first step's l/(c+|v|) vote, before any kinematics has run.

@@ -111,7 +111,7 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     hourglass_force_.assign(nn * D, 0.0);
     hourglass_force_previous_.assign(nn * D, 0.0);
   }
-  viscosity_ = {model.run.viscosity_quadratic, model.run.viscosity_linear};
+  viscosity_ = {model.run.viscosity_quadratic, model.run.viscosity_linear, model.run.viscosity_along_acceleration};
   boundaries_ = BoundaryConditions<D>(model);
   boundaries_.constrain(velocity_.data(), 0.0);
   transmitting_ = TransmittingBoundary<D>(model, elements_);
@@ -144,13 +144,30 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   // (the kinematics that measure |v| have not run yet).
   elements_.set_speeds(velocity_.data());
   gather_element_state();
+  start_energy_and_step();
+}
+
+template <int D>
+void Solver<D>::set_initial_velocity(const std::vector<double>& v) {
+  if (cycle_ != 0 || v.size() != velocity_.size())
+    throw std::logic_error("set_initial_velocity: before the first step, one value per node and component");
+  velocity_ = v;
+  boundaries_.constrain(velocity_.data(), 0.0);
+  elements_.set_speeds(velocity_.data());
+  nodes_checked_cycle_ = -1;
+  start_energy_and_step();
+}
+
+template <int D>
+void Solver<D>::start_energy_and_step() {
   choose_time_step();
+  const Model& model = model_;
   if (model.run.initial_dt > 0.0) {
     dt_next_ = std::min(model.run.initial_dt, model.run.max_dt);
     limit_.dt = dt_next_;
     limit_.reason = "initial_dt";
   }
-
+  const std::size_t nn = node_mass_.size();
   double kinetic = 0.0;
   for (std::size_t n = 0; n < nn; ++n)
     for (int i = 0; i < D; ++i)
@@ -364,7 +381,7 @@ void Solver<D>::element_kinematics() {
   // Particles: density, velocity gradient and their own material batches (the same Material::update).
   if (particles_) particles_->update_state(dt_, time_);
   const KinematicsResult r =
-      elements_.kinematics(position_.data(), velocity_.data(), dt_, viscosity_, batches_);
+      elements_.kinematics(position_.data(), velocity_.data(), velocity_old_.data(), dt_, viscosity_, batches_);
   energy_.viscous += r.viscous_work;
   if (r.bad_element >= 0)
     fail(NumericalError(

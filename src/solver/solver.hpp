@@ -39,6 +39,11 @@ class Solver {
   // on a collapsed element, a non-finite state or a time-step collapse.
   void step();
 
+  // Before the first step: a nodal velocity field (n * D, m/s) in place of the
+  // parts' uniform ones (a radial inflow, a rotation), constrained by the
+  // boundaries, voted into the first time step and counted in the initial energy.
+  void set_initial_velocity(const std::vector<double>& v);
+
   // Caps the next time step (the driver uses it to land on the end time).
   void limit_next_step(double dt_max);
 
@@ -100,6 +105,7 @@ class Solver {
   void update_materials();
   void gather_element_state();
   void choose_time_step();
+  void start_energy_and_step();  // the first step's vote and the initial energy (constructor, set_initial_velocity)
   // Reinforced-concrete stages (solver/reinforcement_stages.cpp, issue 6).
   void setup_reinforcement();
   void add_bar_forces();

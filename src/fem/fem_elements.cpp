@@ -629,7 +629,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
     // decelerates the material along its normal, so d is the compression
     // across it; a smooth convergent flow (a cylinder or sphere of gas
     // coasting inwards) compresses across the flow, not along a, and takes
-    // no q, where tr D would heat it (docs/theory/fem.md, "Artificial
+    // no q, where tr D would heat it (docs/theory-fem.md, "Artificial
     // viscosity"). The in-plane part only in r-z: a has no hoop component.
     Pack div{};
     if (visc.along_acceleration) {

@@ -21,7 +21,7 @@ struct ViscosityControl {
   double linear = 0.06;    // c_linear
   // The compression q acts on: the strain rate along the element's
   // acceleration (Wilkins 1980), or the volumetric rate tr D.
-  bool along_acceleration = true;
+  bool along_acceleration = false;
 };
 
 // How add_internal_forces assembles nodal forces on several threads without

@@ -15,7 +15,7 @@
 // gas there keeps coasting inwards. The run ends at t = 0.6 s, the shock at
 // R = 0.2 m. The spherical r-z set-up is not in the suite yet: its zones at
 // the centre collapse and the step falls to ~1e-6 s by t = 0.1-0.2 s
-// (docs/theory/fem.md, "Artificial viscosity").
+// (docs/theory-fem.md, "Artificial viscosity").
 #include <fmt/format.h>
 
 #include <cmath>
@@ -37,6 +37,7 @@ struct NohSpec {
   int zones = 100;          // along the radius, R in [0, 1]
   double quadratic = 1.5;   // artificial viscosity coefficients
   double linear = 0.06;
+  bool along_acceleration = true;  // [run.viscosity] form = "acceleration"
   double end_time = 0.6;    // s
   std::int64_t max_cycles = 20000;
 };
@@ -63,6 +64,7 @@ inline NohResult run_noh(const NohSpec& spec) {
   Model model;
   model.run.viscosity_quadratic = spec.quadratic;
   model.run.viscosity_linear = spec.linear;
+  model.run.viscosity_along_acceleration = spec.along_acceleration;
   model.run.end_time = spec.end_time;
   model.run.cfl = 0.5;
   model.materials.push_back(

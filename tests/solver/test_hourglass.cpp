@@ -91,13 +91,9 @@ void check(const std::string& label) {
   test::verify({label + ": hourglass / internal energy, stiffness control (0.1)", "under 5 % (issue 2)", 0.0,
                 stiff.energy_ratio, 0.05, false, "-"});
   // The viscous form dissipates what it removes: a looser bound, recorded.
-  // 30 %: the hex block measured 0.222 with q on tr D and 0.254 with q along
-  // the acceleration (1 Dec 2026; the quads 0.096 and below): the impact's
-  // first step, from the initial velocity jump, no longer takes q, so less
-  // of the impact becomes internal energy; the hourglass work is the same form.
-  test::record_check(label + ": hourglass / internal energy, viscous control (0.1)", "under 30 %",
-                     std::to_string(viscous.energy_ratio), viscous.energy_ratio < 0.30);
-  EXPECT_LT(viscous.energy_ratio, 0.30);
+  test::record_check(label + ": hourglass / internal energy, viscous control (0.1)", "under 25 %",
+                     std::to_string(viscous.energy_ratio), viscous.energy_ratio < 0.25);
+  EXPECT_LT(viscous.energy_ratio, 0.25);
   // Share of the hourglass modes in the displacement field: under 10 % with
   // either control, and the criterion is exceeded without control.
   test::verify({label + ": hourglass share of the displacement field, stiffness control", "under 10 %", 0.0,

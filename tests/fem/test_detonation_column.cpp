@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "common/fem_models.hpp"
+#include "detonation_column.hpp"
 #include "common/verification.hpp"
 #include "materials/jwl_eos.hpp"
 #include "materials/registry.hpp"
@@ -31,25 +32,8 @@ struct ColumnResult {
 
 ColumnResult run_column(int cells) {
   const double dx = kLength / cells;
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.run.cfl = 0.5;
-  model.mesh.dimension = 2;
-  BlockSpec block;
-  block.name = "tnt";
-  block.size = {kLength, dx, 0.0};
-  block.cells = {cells, 1, 1};
-  add_block(model.mesh, block);
-  model.materials.push_back(
-      {"tnt", make_material("tnt", "tnt_wang2005", {}, Parameters{}, Parameters{}, Parameters{}), {}});
-  Part part;
-  part.name = "tnt";
-  part.material = 0;
-  model.parts.push_back(part);
-  model.boundaries.push_back(test::symmetry("tnt.ymin", {0.0, 1.0, 0.0}));
-  model.boundaries.push_back(test::symmetry("tnt.ymax", {0.0, 1.0, 0.0}));
-  model.boundaries.push_back(test::symmetry("tnt.xmin", {1.0, 0.0, 0.0}));
-  model.detonations.push_back(DetonationPoint{{0.0, 0.5 * dx, 0.0}, 0.0});
+  Model model = test::detonation_column_model(
+      "tnt", make_material("tnt", "tnt_wang2005", {}, Parameters{}, Parameters{}, Parameters{}), kLength, cells);
 
   const auto& jwl = dynamic_cast<const JwlEos&>(model.materials[0].material->eos());
   ColumnResult r;

@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "common/fem_models.hpp"
+#include "detonation_column.hpp"
 #include "common/verification.hpp"
 #include "materials/jwl_eos.hpp"
 #include "materials/registry.hpp"
@@ -27,7 +28,6 @@ using namespace camouflet;
 namespace {
 
 constexpr double column_length = 0.04;  // m
-constexpr double cfl = 0.5;
 
 // gamma = 3 (omega = 2), rho0 = 1600 kg/m^3, Q = 4 MJ/kg: D = sqrt(2 (gamma^2 - 1) Q) = 8000 m/s,
 // P_CJ = rho0 D^2 / (gamma + 1) = 25.6 GPa.
@@ -86,29 +86,12 @@ struct RefinementResult {
 
 RefinementResult run_column(const std::shared_ptr<const Material>& explosive, int cells) {
   const double dx = column_length / cells;
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.run.cfl = cfl;
-  model.mesh.dimension = 2;
-  BlockSpec block;
-  block.name = "he";
-  block.size = {column_length, dx, 0.0};
-  block.cells = {cells, 1, 1};
-  add_block(model.mesh, block);
-  model.materials.push_back({"he", explosive, {}});
-  Part part;
-  part.name = "he";
-  part.material = 0;
-  model.parts.push_back(part);
-  model.boundaries.push_back(test::symmetry("he.ymin", {0.0, 1.0, 0.0}));
-  model.boundaries.push_back(test::symmetry("he.ymax", {0.0, 1.0, 0.0}));
-  model.boundaries.push_back(test::symmetry("he.xmin", {1.0, 0.0, 0.0}));
-  model.detonations.push_back(DetonationPoint{{0.0, 0.5 * dx, 0.0}, 0.0});
+  Model model = test::detonation_column_model("he", explosive, column_length, cells);
   const auto& eos = dynamic_cast<const JwlEos&>(explosive->eos());
   const double d = eos.detonation_velocity(), p_cj = eos.cj_state().pressure;
   const double rho0 = eos.parameters().density;
   const double c_unburnt = std::sqrt(eos.products_sound_speed_squared(rho0, eos.parameters().e0 / rho0));
-  const double dt_unburnt = cfl * dx / c_unburnt;
+  const double dt_unburnt = model.run.cfl * dx / c_unburnt;
   model.run.end_time = 0.9 * column_length / d;
 
   Solver<2> solver(model);

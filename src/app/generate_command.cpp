@@ -53,13 +53,22 @@ void add_generate_command(CLI::App& app, CommandResult& result) {
           spec.transmitting ? "transmitting" : "FIXED", 1e3 * layout.reflection_time, 1e3 * spec.end_time,
           !spec.transmitting && layout.reflection_time < spec.end_time ? "  WARNING: before the end time"
                                                                        : "");
-      if (spec.sph_radius > 0.0)
+      if (spec.sph_radius > 0.0) {
         std::cout << fmt::format(
             "SPH zone {} <= {} m: {} soil particles of {:.4g} m joined to the FEM soil; charge {} particles "
-            "of "
-            "{:.4g} m ({:.2f} kg modelled)\n",
+            "of {:.4g} m, {} across its {} ({:.2f} kg modelled)\n",
             spec.three_d ? "|x|, y" : "r", spec.sph_radius, layout.zone_particles, layout.zone_spacing,
-            layout.charge_particles, layout.charge_spacing, layout.charge_model_mass);
+            layout.charge_particles, layout.charge_spacing, spec.charge_particles_across,
+            spec.three_d ? "half side" : "radius", layout.charge_model_mass);
+        // The time step follows the finest particles while the products are dense; a zone much
+        // coarser than the charge also couples them through very unequal kernels.
+        const double ratio = layout.zone_spacing / layout.charge_spacing;
+        if (ratio > 4.0 || ratio < 0.5)
+          std::cout << fmt::format(
+              "WARNING: the zone's particles are {:.2g} times the charge's; charge.particles_across_radius "
+              "= {} would match them\n",
+              ratio, std::max<long>(1, std::lround(spec.charge_particles_across / ratio)));
+      }
       return static_cast<int>(exit_ok);
     });
   });

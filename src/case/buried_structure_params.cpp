@@ -58,6 +58,11 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "explosive", s.explosive, s);
     read(*t, "density", s.explosive_density, s);
     read(*t, "depth", s.burst_depth, s);
+    if (t->has("particles_across_radius")) {
+      s.charge_particles_across =
+          static_cast<int>(t->integer("particles_across_radius", s.charge_particles_across));
+      s.where["charge.particles_across_radius"] = t->where("particles_across_radius");
+    }
     t->finish();
   }
   if (auto t = root.table("structure")) {

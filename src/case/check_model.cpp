@@ -7,6 +7,7 @@
 
 #include "case/sections.hpp"
 #include "model/detonation_check.hpp"
+#include "model/element_locator.hpp"
 #include "model/isoparametric.hpp"
 
 namespace camouflet::case_detail {
@@ -91,10 +92,11 @@ bool near_particle(const Model& model, std::span<const double> x) {
 
 void check_gauges(const Model& model) {
   const FemMesh& mesh = model.mesh;
+  const ElementLocator locator(mesh.dimension, mesh.coordinates, mesh.connectivity);
   for (const auto& group : model.gauges)
     for (const auto& g : group.points) {
       const std::span<const double> x(g.position.data(), static_cast<std::size_t>(model.dimension()));
-      if (!locate_point(mesh.dimension, mesh.coordinates, mesh.connectivity, x) && !near_particle(model, x))
+      if (!locator.locate(x) && !near_particle(model, x))
         throw InputError(g.where, fmt::format("gauge '{}' of group '{}' at ({}) lies outside the mesh",
                                               g.name, group.name, fmt::join(x.begin(), x.end(), ", ")));
     }
@@ -133,18 +135,18 @@ static void check_particle_overlap(const Model& model) {
       lo[k] = std::min(lo[k], mesh.coordinates[n * dim + k]);
       hi[k] = std::max(hi[k], mesh.coordinates[n * dim + k]);
     }
+  const ElementLocator locator(mesh.dimension, mesh.coordinates, mesh.connectivity);
   for (std::size_t i = 0; i < p.count(); ++i) {
     const std::span<const double> x(&p.coordinates[i * dim], dim);
     bool inside_box = true;
     for (std::size_t k = 0; k < dim; ++k) inside_box = inside_box && x[k] > lo[k] && x[k] < hi[k];
-    if (!inside_box || !locate_point(mesh.dimension, mesh.coordinates, mesh.connectivity, x)) continue;
+    if (!inside_box || !locator.locate(x)) continue;
     const Part& part = model.parts[static_cast<std::size_t>(p.particle_part[i])];
     SourceLocation w = part.where;
     w.key += ".fill";
-    throw InputError(w,
-                     fmt::format("particles of SPH part '{}' overlap the finite elements at ({}); declare "
-                                 "`join = true` (or `cut_from`) to replace those elements by the zone",
-                                 part.name, fmt::join(x.begin(), x.end(), ", ")));
+    throw InputError(w, fmt::format("particles of SPH part '{}' overlap the finite elements at ({}); declare "
+                                    "`join = true` (or `cut_from`) to replace those elements by the zone",
+                                    part.name, fmt::join(x.begin(), x.end(), ", ")));
   }
 }
 

@@ -92,6 +92,9 @@ void check(const BuriedStructureSpec& s, double a) {
       fail(key + ".coefficient", fmt::format("must lie in (0, 0.5], got {}", c));
   }
   if (s.gauge_count < 2 || s.gauge_count > 100) fail("gauges.count", "must be a whole number from 2 to 100");
+  if (s.charge_particles_across < 1 || s.charge_particles_across > 64)
+    fail("charge.particles_across_radius",
+         fmt::format("must be a whole number from 1 to 64, got {}", s.charge_particles_across));
   if (2.0 * s.wall_thickness >= std::min(s.box_length, s.box_height))
     fail("structure.wall_thickness", fmt::format("{} m walls leave no room inside a {} m x {} m box",
                                                  s.wall_thickness, s.box_length, s.box_height));
@@ -195,42 +198,45 @@ std::vector<double> gauge_ranges(const BuriedStructureSpec& s, double far) {
 }
 
 // The SPH zone's particles, filled here as the case reader will fill them
-// (mesh/particle_fill.hpp) to count them and to choose the charge spacing: the
-// largest of mesh.near / k (k = 1 .. 8) whose cell-centred disc holds the
-// charge's volume within 3 % (the r-z lattice approximates the sphere by whole
-// cells), else the best of them. The modelled mass is printed in the case.
+// (mesh/particle_fill.hpp) to count them. The charge is the cell-centred
+// lattice of N = charge.particles_across_radius cells across a radius a' with
+// spacing a'/N: the lattice is the same set of cells at every a', so its
+// volume is c_N a'^3 and a' = (V / c_N)^(1/3) holds the charge's volume V
+// exactly (no cell centre lies on the circle: (i+1/2)^2 + (j+1/2)^2 is never a
+// whole number), whatever the mass and the zone's spacing.
+double lattice_volume(const ParticleFillSpec& fill, ParticleSet& set) {
+  fill_particles(set, fill, GeometryMode::axisymmetric);
+  double v = 0.0;
+  for (double dv : set.volume) v += dv;
+  return v;
+}
+
 void layout_sph_zone(const BuriedStructureSpec& s, BuriedStructureLayout& L) {
   const double volume = s.charge_mass / s.explosive_density;
+  const int n = s.charge_particles_across;
   ParticleFillSpec charge;
   charge.region.shape = ParticleRegion::Shape::sphere;
   charge.region.centre = {0.0, -s.burst_depth, 0.0};
   charge.region.radius = L.charge_radius;
-  double best_error = 1e300;
-  for (int k = 1; k <= 8; ++k) {
-    charge.spacing = s.size_near / k;
-    ParticleSet set;
-    fill_particles(set, charge, GeometryMode::axisymmetric);
-    double v = 0.0;
-    for (double dv : set.volume) v += dv;
-    const double error = std::abs(v / volume - 1.0);
-    if (error < best_error - 1e-12) {
-      best_error = error;
-      L.charge_spacing = charge.spacing;
-      L.charge_particles = set.count();
-      L.charge_model_mass = v * s.explosive_density;
-    }
-    if (error <= 0.03) break;
-  }
+  charge.spacing = L.charge_radius / n;
+  ParticleSet trial;
+  const double trial_volume = lattice_volume(charge, trial);
+  charge.region.radius = L.charge_radius * std::cbrt(volume / trial_volume);
+  charge.spacing = charge.region.radius / n;
+  ParticleSet set;
+  L.charge_model_mass = lattice_volume(charge, set) * s.explosive_density;
+  L.charge_fill_radius = charge.region.radius;
+  L.charge_spacing = charge.spacing;
+  L.charge_particles = set.count();
   L.zone_spacing = s.size_near;
   ParticleFillSpec zone;
   zone.region.min = {0.0, -s.sph_bottom(), 0.0};
   zone.region.max = {s.sph_radius, 0.0, 0.0};
   zone.spacing = s.size_near;
-  charge.spacing = L.charge_spacing;
   zone.exclude.push_back(charge.region);
-  ParticleSet set;
-  fill_particles(set, zone, GeometryMode::axisymmetric);
-  L.zone_particles = set.count();
+  ParticleSet zone_set;
+  fill_particles(zone_set, zone, GeometryMode::axisymmetric);
+  L.zone_particles = zone_set.count();
 }
 
 // Inner and outer mats of every wall as embedded bars ([[bars]]), bar lines at
@@ -316,16 +322,17 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
   if (has_sph_zone(s))
     fmt::format_to(
         out,
-        "# {} kg of {} (sphere radius {:.3f} m: an r-z disc of {} SPH particles of {:.4g} m, modelled\n"
-        "# mass {:.2f} kg) centred {} m deep on the axis, in an SPH soil zone r <= {} m, from the ground "
+        "# {} kg of {} (sphere radius {:.3f} m: an r-z disc of {} SPH particles of {:.4g} m, {} across\n"
+        "# its radius, modelled mass {:.2f} kg) centred {} m deep on the axis, in an SPH soil zone r <= {} "
+        "m, from the ground "
         "down\n"
         "# to {} m ({} particles of {:.4g} m) joined to the FEM soil; RC box {} m x {} m, walls {} m, front\n"
         "# face {} m from the axis, roof top {} m deep; domain {} m x {} m; {} blocks, {} elements before\n"
         "# the zone's hole is cut.\n#\n",
         s.charge_mass, s.explosive, L.charge_radius, L.charge_particles, L.charge_spacing,
-        L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_bottom(), L.zone_particles, L.zone_spacing,
-        s.box_length, s.box_height, s.wall_thickness, s.standoff, s.top_depth, s.domain_radius,
-        s.domain_depth, L.block_count, L.element_count);
+        s.charge_particles_across, L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_bottom(),
+        L.zone_particles, L.zone_spacing, s.box_length, s.box_height, s.wall_thickness, s.standoff,
+        s.top_depth, s.domain_radius, s.domain_depth, L.block_count, L.element_count);
   else
     fmt::format_to(
         out,
@@ -405,8 +412,8 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "# SPH (Wang et al. 2005, Fig. 6): the charge as explosive particles, detonated at its centre;\n"
         "# the near-field soil as particles replacing the soil elements in the zone, joined to them.\n"
         "[[parts]]\nname = \"charge\"\nkind = \"sph\"\nmaterial = \"charge\"\n"
-        "fill = {{ shape = \"sphere\", centre = [0.0, {:.9g}], radius = {:.9g}, spacing = {:.9g} }}\n\n",
-        -s.burst_depth, L.charge_radius, L.charge_spacing);
+        "fill = {{ shape = \"sphere\", centre = [0.0, {:.9g}], radius = {:.12g}, spacing = {:.12g} }}\n\n",
+        -s.burst_depth, L.charge_fill_radius, L.charge_spacing);
     fmt::format_to(
         out,
         "[[parts]]\nname = \"near_field\"\nkind = \"sph\"\nmaterial = \"soil\"\njoin = true\n"

@@ -36,6 +36,11 @@ struct BuriedStructureSpec {
   std::string explosive = "tnt_wang2005";
   double explosive_density = 1630.0;  // kg/m^3 (sizes the charge)
   double burst_depth = 0.5;           // m
+  // SPH charge: particles along its radius (r-z: the cell-centred lattice of
+  // spacing a'/N, a' the region radius that makes the lattice hold the asked
+  // mass; 3-D: along the half side of the equal-volume cube). The same for
+  // every mass, so a sweep over mass compares sources of one resolution.
+  int charge_particles_across = 8;
   // Box: its front (outer) face `standoff` m from the axis.
   double standoff = 6.0;        // m
   double box_length = 4.0;      // m, radial
@@ -122,7 +127,9 @@ struct BuriedStructureLayout {
   std::size_t block_count = 0;
   double reflection_time = 0.0;  // s, earliest arrival at the front wall of a wave reflected at a far edge
   // SPH zone (sph_radius > 0): particle spacings (m) and counts, the modelled charge mass (kg).
-  double zone_spacing = 0.0, charge_spacing = 0.0;
+  // charge_fill_radius (r-z): the radius of the charge's particle region (m), within a few parts in
+  // a thousand of charge_radius, chosen so the particles' volumes add up to the charge's.
+  double zone_spacing = 0.0, charge_spacing = 0.0, charge_fill_radius = 0.0;
   std::size_t zone_particles = 0, charge_particles = 0;
   double charge_model_mass = 0.0;
 };

@@ -113,14 +113,12 @@ double mid(const Interval& i) {
   return 0.5 * (i.a + i.b);
 }
 
-// The charge's particle spacing: mesh.near / k for the smallest k that puts
-// at least two particles along the half side (so the detonation point at the
-// centre lies within a spacing of one; the cube's volume is tiled exactly at
-// any spacing).
+// The charge's particle spacing: charge.particles_across_radius cells along the
+// cube's half side, which tiles the cube (and so the charge's volume) exactly
+// at every mass; an even count across the cube puts no particle at the
+// detonation point but every one within a spacing of it.
 double charge_spacing(const BuriedStructureSpec& s, double h) {
-  int k = 1;
-  while (k < 8 && std::lround(h / (s.size_near / k)) < 2) ++k;
-  return s.size_near / k;
+  return h / s.charge_particles_across;
 }
 
 ParticleFillSpec charge_fill(const BuriedStructureSpec& s, double h) {
@@ -174,12 +172,13 @@ void write_header(const BuriedStructureSpec& s, const BuriedStructureLayout& L, 
     fmt::format_to(
         out,
         "# {} kg of {} (sphere radius {:.3f} m, modelled as the equal-volume cube of half side {:.3f} m:\n"
-        "# {} SPH particles of {:.4g} m in the half model, {:.2f} kg in all) centred {} m deep, in an\n"
+        "# {} SPH particles of {:.4g} m in the half model, {} along its half side, {:.2f} kg in all) centred "
+        "{} m deep, in an\n"
         "# SPH soil zone |x| <= {} m, y <= {} m, from the ground down to {} m ({} particles of {:.4g} "
         "m)\n# joined to the FEM soil;",
         s.charge_mass, s.explosive, L.charge_radius, L.charge_half_size, L.charge_particles, L.charge_spacing,
-        L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_radius, s.sph_bottom(), L.zone_particles,
-        L.zone_spacing);
+        s.charge_particles_across, L.charge_model_mass, s.burst_depth, s.sph_radius, s.sph_radius,
+        s.sph_bottom(), L.zone_particles, L.zone_spacing);
   else
     fmt::format_to(
         out,
@@ -328,7 +327,7 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
          "# the near-field soil as particles replacing the soil elements in the zone, joined to them.\n";
     fmt::format_to(out,
                    "[[parts]]\nname = \"charge\"\nkind = \"sph\"\nmaterial = \"charge\"\n"
-                   "fill = {{ shape = \"box\", min = {}, max = {}, spacing = {:.9g} }}\n\n",
+                   "fill = {{ shape = \"box\", min = {}, max = {}, spacing = {:.12g} }}\n\n",
                    fmt_point(charge.region.min[0], charge.region.min[1], charge.region.min[2]),
                    fmt_point(charge.region.max[0], charge.region.max[1], charge.region.max[2]),
                    charge.spacing);

@@ -97,6 +97,13 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
   const auto a = column_peaks(out / "group_A.csv");
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
+  // Updated 1 Dec 2026: the generator's charge is the lattice of charge.particles_across_radius
+  // (default 8) cells across a region radius that holds the asked mass exactly
+  // (mesh/buried_structure.cpp): here 104 particles of 8.3 mm and 2.000 kg, where it was 70
+  // particles of 10 mm and 2.048 kg (+2.4 %). B2 3.81347e7 -> 3.49774e7 Pa (-8.3 %; B2 sits at
+  // the zone's corner, the most sensitive gauge, see 22 Nov), t9 8.84377e7 -> 8.55787e7 Pa
+  // (-3.2 %), rebar 4.54418e-3 -> 4.45075e-3 (-2.1 %), A1 2.92094e8 -> 2.97262e8 Pa (+1.8 %),
+  // t2 20.1742 -> 19.866 m/s (-1.5 %), B1 -0.7 %; the energy balance closes to 1.0 %, was 4.1 %.
   // Updated 1 Dec 2026: the burn fraction is max(programmed, volumetric) with n_burn 1.5
   // (materials/programmed_burn.hpp; the charge's cells crushed ahead of the front burn):
   // B1 1.10375e8 -> 1.08095e8 Pa, B2 1.70230e6 -> 1.74972e6 Pa, A1 1.65966e8 -> 1.66926e8 Pa,
@@ -138,9 +145,9 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   ASSERT_EQ(model.joins.size(), 1u);
   const RunSummary summary = run_model(model, test::quiet_run_options(out));
   ASSERT_FALSE(summary.failed) << summary.stop_reason;
-  // Known weak: with the SPH zone the balance closes to 4.1 % here (the join
-  // resolves the shock passing it only to first order in the spacing, see
-  // tests/case/test_joined_case.cpp), against 0.2 % for the all-FEM case.
+  // Known weak: with the SPH zone the balance closes to 1.0 % here (4.1 % with the coarser,
+  // 2.4 % heavy charge of the generator before; the join resolves the shock passing it only to first
+  // order in the spacing, see tests/case/test_joined_case.cpp), against 0.2 % for the all-FEM case.
   std::cout << "regression (SPH zone) energy error " << summary.energy.relative_error << "\n";
   EXPECT_LT(summary.energy.relative_error, 0.05);
 
@@ -148,6 +155,13 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
   const auto bars = column_peaks(out / "bars.csv");
+  // Updated 1 Dec 2026: the generator's charge is the lattice of charge.particles_across_radius
+  // (default 8) cells across a region radius that holds the asked mass exactly
+  // (mesh/buried_structure.cpp): here 104 particles of 8.3 mm and 2.000 kg, where it was 70
+  // particles of 10 mm and 2.048 kg (+2.4 %). B2 3.81347e7 -> 3.49774e7 Pa (-8.3 %; B2 sits at
+  // the zone's corner, the most sensitive gauge, see 22 Nov), t9 8.84377e7 -> 8.55787e7 Pa
+  // (-3.2 %), rebar 4.54418e-3 -> 4.45075e-3 (-2.1 %), A1 2.92094e8 -> 2.97262e8 Pa (+1.8 %),
+  // t2 20.1742 -> 19.866 m/s (-1.5 %), B1 -0.7 %; the energy balance closes to 1.0 %, was 4.1 %.
   // Updated 1 Dec 2026: the burn fraction is max(programmed, volumetric) with n_burn 1.5
   // (materials/programmed_burn.hpp): B2 3.61734e7 -> 3.81347e7 Pa (+5.4 %), t9 8.52641e7 ->
   // 8.84377e7 Pa (+3.7 %), rebar 4.74049e-3 -> 4.54418e-3 (-4.1 %), A1 3.00300e8 -> 2.92094e8 Pa;
@@ -166,12 +180,12 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   // 19.2332 m/s, rebar 2.39349e-3 -> 2.70126e-3; B1 and A1 moved less than 3 %.
   verify_peaks("Reduced buried-structure case with SPH zone: peak ", "regression (SPH zone) ",
                {
-                   {"group_B B1 pressure", 2.38789e8, "Pa", b.at("B1.pressure")},
-                   {"group_B B2 pressure", 3.81347e7, "Pa", b.at("B2.pressure")},
-                   {"group_A A1 pressure", 2.92094e8, "Pa", a.at("A1.pressure")},
-                   {"structure t9 stress_xx", 8.84377e7, "Pa", s.at("t9.stress_xx")},
-                   {"structure t2 velocity_x", 20.1742, "m/s", s.at("t2.velocity_x")},
-                   {"rebar front_out.1 axial_strain", 4.54418e-3, "-", bars.at("front_out.1.axial_strain")},
+                   {"group_B B1 pressure", 2.37004e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 3.49774e7, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 2.97262e8, "Pa", a.at("A1.pressure")},
+                   {"structure t9 stress_xx", 8.55787e7, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 19.866, "m/s", s.at("t2.velocity_x")},
+                   {"rebar front_out.1 axial_strain", 4.45075e-3, "-", bars.at("front_out.1.axial_strain")},
                });
 }
 

@@ -636,14 +636,25 @@ void SphSystem<D>::update_state(double dt, double time) {
   // Scratch kept between steps (no allocation in the cycle): every entry is written before it is read.
   auto& x_end = scratch_x_;
   x_end.resize(n);
+  auto& eta_start = scratch_eta_;
+  eta_start.resize(n);
 
   // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
-  // with v(n+1/2): second-order in time, and the p dV work then matches the
-  // kinetic energy the forces exchange far better than at x(n+1).
+  // with v(n+1/2), and with the pair weights (m_j / eta_j) at mid-step too:
+  // eta(n+1/2) predicted from the last step's rate of eta (the trace of the
+  // strain rate it produced, without the hoop term). Weights at eta(n) would
+  // make the p dV work lag the kinetic energy the forces exchange by a
+  // first-order term, which in a fast expansion (a detonation's products)
+  // creates energy in proportion to the time step.
+  const int planar_axes = axisymmetric ? 2 : D;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     x_end[i] = p_.position[i];
     p_.position[i] -= p_.velocity[i] * (0.5 * dt);
+    eta_start[i] = p_.planar_density[i];
+    const SymTensor& d_last = p_.strain_rate[i];
+    const double rate_last = -(d_last.xx + d_last.yy + (planar_axes == 3 ? d_last.zz : 0.0));
+    p_.planar_density[i] *= std::exp(0.5 * dt * rate_last);
   }
   refresh_ghosts();
   const bool corrected = options_.kernel_correction;
@@ -754,7 +765,7 @@ void SphSystem<D>::update_state(double dt, double time) {
         }
         p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
         // Continuity, integrated as d ln(eta) so that eta stays positive.
-        const double eta_new = eta[i] * std::exp(dt * eta_rate);
+        const double eta_new = eta_start[i] * std::exp(dt * eta_rate);
         double hi = h[i];
         if (options_.variable_smoothing_length) {
           const double h0 = p_.reference_smoothing_length[i];

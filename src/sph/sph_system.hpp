@@ -91,7 +91,7 @@ struct ParticleArrays {
   std::vector<double> pressure;   // Pa
   std::vector<double> plastic_strain;
   std::vector<double> damage;
-  std::vector<double> temperature;  // K, copied from the material point like the damage
+  std::vector<double> temperature;       // K, copied from the material point like the damage
   std::vector<int> material;             // index into Model::materials
   std::vector<int> part;                 // index into Model::parts
   std::vector<std::uint32_t> slot;       // index in the material's batch
@@ -303,7 +303,8 @@ class SphSystem {
     double mass;                  // kg
   };
   std::vector<HeatPoint> heat_points_;
-  std::vector<Vec<D>> scratch_x_;  // update_state(): x(n+1) while the rates use x(n+1/2)
+  std::vector<Vec<D>> scratch_x_;    // update_state(): x(n+1) while the rates use x(n+1/2)
+  std::vector<double> scratch_eta_;  // update_state(): eta(n) while the pair weights use eta(n+1/2)
   bool pair_dissipation_current_ = false;
   std::int64_t active_extractions_ = 0;            // active-list extractions so far
   std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to

@@ -24,11 +24,13 @@ namespace {
 namespace fs = std::filesystem;
 
 // A reduced paper case (tests/case/test_buried_regression.cpp, coarser): 1 kg
-// TNT at 0.2 m, a 0.6 m x 0.4 m box 0.5 m away, SPH zone r <= 0.25 m, 0.5 ms.
+// TNT at 0.2 m, a 0.6 m x 0.4 m box 0.5 m away, SPH zone r <= 0.25 m, 0.5 ms; the charge's
+// particles of about the zone's spacing (2 across its radius, as `camouflet generate` advises).
 constexpr const char* tiny_base = R"(title = "tiny sweep base"
 [charge]
 mass = 1.0
 depth = 0.2
+particles_across_radius = 2
 [structure]
 standoff = 0.5
 length = 0.6

@@ -35,7 +35,8 @@
 // Stages of one cycle (the solver, or step() for pure-SPH runs, calls them in order):
 //   compute_accelerations()  forces at x(n) with sigma(n)       -> a(n)
 //   advance(dt)              v(n+1/2) = v(n-1/2) + a dt; x(n+1) = x(n) + v dt
-//   update_state(dt, t)      eta, rho, L, h at x(n+1); Material::update -> sigma(n+1)
+//   update_state(dt, t)      rates at x(n+1/2), v(n+1/2), pair weights m_j / eta_j(n+1/2)
+//                            -> eta, rho, h at n+1, L; Material::update -> sigma(n+1)
 #include <cstdint>
 #include <functional>
 #include <memory>

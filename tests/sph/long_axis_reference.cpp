@@ -1,0 +1,188 @@
+// The axis treatment of r-z SPH against a model that has no axis: a small TNT
+// charge buried in the seismic sandy clay, all SPH at one spacing, once in r-z
+// and once in 3-D as a quarter model (symmetry planes x = 0 and y = 0), the
+// same free ground z = 0 and the same free outer faces (r-z: a cylinder of
+// radius R; 3-D: the square x, y <= R, whose corners are farther out than the
+// cylinder: the comparison stops before their echo reaches the axis). The soil
+// particles that start 2.5 to 6 charge radii below the charge centre, in the
+// first three r-z columns, are compared with the 3-D particles at the same
+// distance from the axis (fitted as u_z = A + B r^2, u_r = C r + E r^3 over the
+// 3-D particles with r < 3.5 dx: both fields are smooth and even / odd in r).
+//
+// The target (the near-field convergence work): axial and radial displacement
+// of each of the first three columns within 5 % of the 3-D run. At 1 ms the
+// axial motion meets it; the radial motion does not (docs/theory/sph.md, "The
+// first columns next to the axis"), and its test is disabled until the axis
+// treatment meets it. The buried cases' first column runs ahead later (5-10
+// ms), beyond this quick comparison.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "common/verification.hpp"
+#include "materials/registry.hpp"
+#include "sph/mirror_boundary.hpp"
+#include "sph_test_models.hpp"
+
+using namespace camouflet;
+using namespace camouflet::sph;
+
+namespace {
+
+constexpr double kSpacing = 0.02;       // m
+constexpr double kChargeRadius = 0.06;  // m: 1.44 kg of TNT, 3 particles across its radius
+constexpr double kDepth = 0.3;          // m, charge centre below the ground
+constexpr double kRadius = 0.4;         // m, soil extent from the axis
+constexpr double kBottom = 0.7;         // m, soil bottom below the ground
+constexpr double kEnd = 1.0e-3;         // s
+
+struct ColumnMotion {
+  double uz[3] = {}, ur[3] = {};  // m, at r = 0.5, 1.5, 2.5 spacings
+  double energy_error = 0.0;
+};
+
+// The charge (a sphere; in 3-D its quarter x, y >= 0) and the soil around it.
+template <int D>
+Model buried_charge_model() {
+  Model model;
+  model.run.mode = D == 2 ? GeometryMode::axisymmetric : GeometryMode::three_d;
+  const int z = D - 1;
+  ParticleFillSpec charge;
+  charge.region.shape = ParticleRegion::Shape::sphere;
+  charge.region.centre[z] = -kDepth;
+  charge.region.radius = kChargeRadius;
+  charge.spacing = kSpacing;
+  if constexpr (D == 3)
+    for (int a = 0; a < 2; ++a) {  // leave out x < 0 and y < 0: the mirror planes stand for them
+      ParticleRegion half;
+      half.min = {-1.0, -1.0, -1.0};
+      half.max = {1.0, 1.0, 1.0};
+      half.max[a] = 0.0;
+      charge.exclude.push_back(half);
+    }
+  std::array<double, 3> lo{}, hi{};
+  lo[z] = -kBottom;
+  for (int a = 0; a < D - 1; ++a) hi[a] = kRadius;
+  ParticleFillSpec soil = test::box_fill(lo, hi, kSpacing);
+  soil.exclude.push_back(charge.region);
+  test::add_sph_part(model, "tnt",
+                     make_material("tnt", "tnt_wang2005", {}, Parameters{}, Parameters{}, Parameters{}),
+                     charge);
+  test::add_sph_part(
+      model, "soil",
+      make_material("soil", "sandy_clay_wang2005_seismic", {}, Parameters{}, Parameters{}, Parameters{}),
+      soil);
+  DetonationPoint point;
+  point.position[z] = -kDepth;
+  model.detonations.push_back(point);
+  return model;
+}
+
+// Least squares of y = a f(r) + b g(r).
+std::pair<double, double> fit2(const std::vector<double>& f, const std::vector<double>& g,
+                               const std::vector<double>& y) {
+  double ff = 0, fg = 0, gg = 0, fy = 0, gy = 0;
+  for (std::size_t k = 0; k < y.size(); ++k) {
+    ff += f[k] * f[k], fg += f[k] * g[k], gg += g[k] * g[k], fy += f[k] * y[k], gy += g[k] * y[k];
+  }
+  const double det = ff * gg - fg * fg;
+  return {(fy * gg - gy * fg) / det, (gy * ff - fy * fg) / det};
+}
+
+template <int D>
+ColumnMotion run_column_motion() {
+  const Model model = buried_charge_model<D>();
+  SphOptions options;
+  options.viscosity_alpha = 0.2;  // as the generated buried cases
+  std::vector<MirrorPlane> planes;
+  if constexpr (D == 3) planes = {{0, 0.0, PlaneKind::symmetry}, {1, 0.0, PlaneKind::symmetry}};
+  SphSystem<D> sph(model, options, planes);
+  const double e0 = sph.kinetic_energy() + sph.internal_energy();
+  double dt_last = 0.0;
+  const long cycles = test::run_leapfrog_until(sph, kEnd, 0.5, &dt_last);
+  const double e_end = test::synchronised_kinetic_energy(sph, dt_last) + sph.internal_energy();
+  ColumnMotion out;
+  out.energy_error = e_end / e0 - 1.0;
+  const auto& p = sph.particles();
+  const int z = D - 1;
+  std::vector<double> r, uz, ur;
+  for (std::size_t i = 0; i < sph.size(); ++i) {
+    if (p.part[i] != 1) continue;  // soil
+    const Vec<D> x0 = p.position[i] - p.displacement[i];
+    const double below = -kDepth - x0[z];
+    if (below < 2.5 * kChargeRadius || below > 6.0 * kChargeRadius) continue;
+    const double r0 = D == 2 ? x0[0] : std::hypot(x0[0], x0[1]);
+    if (r0 > 3.5 * kSpacing) continue;
+    const double u_r =
+        D == 2 ? p.displacement[i][0] : (p.displacement[i][0] * x0[0] + p.displacement[i][1] * x0[1]) / r0;
+    r.push_back(r0), uz.push_back(p.displacement[i][z]), ur.push_back(u_r);
+  }
+  std::vector<double> one(r.size(), 1.0), r2(r.size()), r3(r.size());
+  for (std::size_t k = 0; k < r.size(); ++k) r2[k] = r[k] * r[k], r3[k] = r2[k] * r[k];
+  if constexpr (D == 2) {
+    // Column means: the r-z particles lie on the columns themselves.
+    for (int c = 0; c < 3; ++c) {
+      double su = 0, sr = 0;
+      int n = 0;
+      for (std::size_t k = 0; k < r.size(); ++k)
+        if (std::abs(r[k] - (c + 0.5) * kSpacing) < 0.25 * kSpacing) su += uz[k], sr += ur[k], ++n;
+      out.uz[c] = su / n;
+      out.ur[c] = sr / n;
+    }
+  } else {
+    // The 3-D particles' mean over the same depth range, fitted in r.
+    const auto [a, b] = fit2(one, r2, uz);
+    const auto [c1, e3] = fit2(r, r3, ur);
+    for (int c = 0; c < 3; ++c) {
+      const double rc = (c + 0.5) * kSpacing;
+      out.uz[c] = a + b * rc * rc;
+      out.ur[c] = c1 * rc + e3 * rc * rc * rc;
+    }
+  }
+  std::printf(
+      "%s: %zu particles, %ld cycles, energy %+.3f %%; columns r = 0.5/1.5/2.5 dx: u_z %.4f %.4f %.4f m, "
+      "u_r %.4f %.4f %.4f m\n",
+      D == 2 ? "r-z" : "3-D quarter", sph.size(), cycles, 100.0 * out.energy_error, out.uz[0], out.uz[1],
+      out.uz[2], out.ur[0], out.ur[1], out.ur[2]);
+  return out;
+}
+
+}  // namespace
+
+// Both runs once, shared by the tests below (15 s on one core).
+const std::pair<ColumnMotion, ColumnMotion>& runs() {
+  static const std::pair<ColumnMotion, ColumnMotion> both{run_column_motion<2>(), run_column_motion<3>()};
+  return both;
+}
+
+// Measured at main d47382d, 2 Dec 2026, 1 ms: u_z r-z / 3-D = 0.954, 0.984, 1.048 in columns 1-3;
+// u_r r-z / 3-D = 0.869, 0.704, 0.813 (the r-z soil next to the axis moves outwards too little).
+TEST(SphAxisReference, AxialMotionOfTheFirstColumnsAsInThreeDimensions) {
+  const auto& [rz, ref] = runs();
+  // The reference itself: it conserves energy, and its charge drove the soil below it down and out.
+  EXPECT_LT(std::abs(ref.energy_error), 0.01);
+  EXPECT_LT(ref.uz[0], 0.0);
+  EXPECT_GT(ref.ur[2], 0.0);
+  for (int c = 0; c < 3; ++c) {
+    std::printf("column %d: u_z r-z / 3-D = %.3f, u_r r-z / 3-D = %.3f\n", c + 1, rz.uz[c] / ref.uz[c],
+                rz.ur[c] / ref.ur[c]);
+    test::verify({fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms: axial displacement of r-z column {} "
+                              "(2.5-6 charge radii below the charge)",
+                              c + 1),
+                  "the same problem in 3-D (quarter model, no axis), within 5 %", ref.uz[c], rz.uz[c], 0.05,
+                  true, "m"});
+  }
+}
+
+// The radial motion misses the target today (13-30 %): enable with the axis treatment that meets it.
+TEST(SphAxisReference, DISABLED_RadialMotionOfTheFirstColumnsAsInThreeDimensions) {
+  const auto& [rz, ref] = runs();
+  for (int c = 0; c < 3; ++c)
+    test::verify(
+        {fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms: radial displacement of r-z column {}", c + 1),
+         "the same problem in 3-D (quarter model, no axis), within 5 %", ref.ur[c], rz.ur[c], 0.05, true,
+         "m"});
+}

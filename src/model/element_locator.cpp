@@ -111,31 +111,10 @@ std::optional<ElementLocation> ElementLocator::locate(std::span<const double> x,
     index[i] = std::min<std::int64_t>(static_cast<std::int64_t>(t), cells_[i] - 1);
   }
   const std::int64_t bin = bin_of(index);
-  const int npe = nodes_per_element(dim_);
-  double nodes[24];
-  for (std::int64_t k = bin_start_[bin]; k < bin_start_[bin + 1]; ++k) {
-    const std::int64_t e = bin_elements_[static_cast<std::size_t>(k)];
-    gather_element(dim_, coordinates_, connectivity_, e, nodes);
-    // locate_point's box test, so that both find the same element.
-    bool outside = false;
-    for (int i = 0; i < dim_ && !outside; ++i) {
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
-      for (int a = 0; a < npe; ++a) {
-        lo = std::min(lo, nodes[a * dim_ + i]);
-        hi = std::max(hi, nodes[a * dim_ + i]);
-      }
-      const double slack = tol * (hi - lo);
-      outside = x[static_cast<std::size_t>(i)] < lo - slack || x[static_cast<std::size_t>(i)] > hi + slack;
-    }
-    if (outside) continue;
-    const auto xi =
-        inverse_map(dim_, std::span<const double>(nodes, static_cast<std::size_t>(npe * dim_)), x);
-    if (!xi) continue;
-    bool inside = true;
-    for (int i = 0; i < dim_; ++i)
-      inside = inside && std::abs((*xi)[static_cast<std::size_t>(i)]) <= 1.0 + tol;
-    if (inside) return ElementLocation{e, *xi};
-  }
+  for (std::int64_t k = bin_start_[bin]; k < bin_start_[bin + 1]; ++k)
+    if (auto found = locate_in_element(dim_, coordinates_, connectivity_,
+                                       bin_elements_[static_cast<std::size_t>(k)], x, tol))
+      return found;
   return std::nullopt;
 }
 

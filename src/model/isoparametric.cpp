@@ -125,33 +125,37 @@ void gather_element(int dim, std::span<const double> coordinates, std::span<cons
   }
 }
 
+std::optional<ElementLocation> locate_in_element(int dim, std::span<const double> coordinates,
+                                                 std::span<const std::int64_t> connectivity, std::int64_t e,
+                                                 std::span<const double> x, double tol) {
+  const int npe = npe_of(dim);
+  double nodes[24];
+  gather_element(dim, coordinates, connectivity, e, nodes);
+  // Bounding-box rejection first: most elements a search tries are far away.
+  for (int i = 0; i < dim; ++i) {
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (int a = 0; a < npe; ++a) {
+      lo = std::min(lo, nodes[a * dim + i]);
+      hi = std::max(hi, nodes[a * dim + i]);
+    }
+    const double slack = tol * (hi - lo);
+    if (x[static_cast<std::size_t>(i)] < lo - slack || x[static_cast<std::size_t>(i)] > hi + slack)
+      return std::nullopt;
+  }
+  const auto xi = inverse_map(dim, std::span<const double>(nodes, static_cast<std::size_t>(npe * dim)), x);
+  if (!xi) return std::nullopt;
+  for (int k = 0; k < dim; ++k)
+    if (!(std::abs((*xi)[static_cast<std::size_t>(k)]) <= 1.0 + tol)) return std::nullopt;
+  return ElementLocation{e, *xi};
+}
+
 std::optional<ElementLocation> locate_point(int dim, std::span<const double> coordinates,
                                             std::span<const std::int64_t> connectivity,
                                             std::span<const double> x, double tol) {
-  const int npe = npe_of(dim);
-  const auto n_elements = static_cast<std::int64_t>(connectivity.size() / static_cast<std::size_t>(npe));
-  double nodes[24];
-  for (std::int64_t e = 0; e < n_elements; ++e) {
-    gather_element(dim, coordinates, connectivity, e, nodes);
-    // Bounding-box rejection first: most elements are far away.
-    bool outside = false;
-    for (int i = 0; i < dim && !outside; ++i) {
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
-      for (int a = 0; a < npe; ++a) {
-        lo = std::min(lo, nodes[a * dim + i]);
-        hi = std::max(hi, nodes[a * dim + i]);
-      }
-      const double slack = tol * (hi - lo);
-      outside = x[static_cast<std::size_t>(i)] < lo - slack || x[static_cast<std::size_t>(i)] > hi + slack;
-    }
-    if (outside) continue;
-    const auto xi = inverse_map(dim, std::span<const double>(nodes, static_cast<std::size_t>(npe * dim)), x);
-    if (!xi) continue;
-    bool inside = true;
-    for (int k = 0; k < dim; ++k)
-      inside = inside && std::abs((*xi)[static_cast<std::size_t>(k)]) <= 1.0 + tol;
-    if (inside) return ElementLocation{e, *xi};
-  }
+  const auto n_elements =
+      static_cast<std::int64_t>(connectivity.size() / static_cast<std::size_t>(npe_of(dim)));
+  for (std::int64_t e = 0; e < n_elements; ++e)
+    if (auto found = locate_in_element(dim, coordinates, connectivity, e, x, tol)) return found;
   return std::nullopt;
 }
 

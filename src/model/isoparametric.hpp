@@ -34,6 +34,12 @@ struct ElementLocation {
   Natural xi{};
 };
 
+// Element e's natural coordinates of x when its closure contains x (tolerance `tol` in natural
+// coordinates), else nothing.
+std::optional<ElementLocation> locate_in_element(int dim, std::span<const double> coordinates,
+                                                 std::span<const std::int64_t> connectivity, std::int64_t e,
+                                                 std::span<const double> x, double tol = 1e-8);
+
 // The element whose closure contains x (tolerance `tol` in natural
 // coordinates), searching every element; nothing when x lies outside the mesh.
 std::optional<ElementLocation> locate_point(int dim, std::span<const double> coordinates,

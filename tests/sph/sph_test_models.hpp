@@ -59,6 +59,23 @@ inline int add_sph_part(Model& model, const std::string& name, std::shared_ptr<c
   return spec.part;
 }
 
+// The 100 kg TNT sphere of the seed paper (tnt_wang2005, R = 0.2447 m at
+// 1630 kg/m^3) as r-z particles of spacing R / n, lit at its centre on the axis.
+inline Model tnt_sphere_rz(int n) {
+  const double radius = 0.2447;  // m
+  Model model;
+  model.run.mode = GeometryMode::axisymmetric;
+  ParticleFillSpec fill;
+  fill.region.shape = ParticleRegion::Shape::sphere;
+  fill.region.centre = {0, 0, 0};
+  fill.region.radius = radius;
+  fill.spacing = radius / n;
+  add_sph_part(model, "tnt", make_material("tnt", "tnt_wang2005", {}, Parameters{}, Parameters{}, Parameters{}),
+               fill);
+  model.detonations.push_back(DetonationPoint{{0.0, 0.0, 0.0}, 0.0});
+  return model;
+}
+
 inline ParticleFillSpec box_fill(std::array<double, 3> lo, std::array<double, 3> hi, double spacing) {
   ParticleFillSpec s;
   s.region.shape = ParticleRegion::Shape::box;

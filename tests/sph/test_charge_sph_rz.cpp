@@ -20,17 +20,7 @@ using namespace camouflet;
 using namespace camouflet::sph;
 
 TEST(SphChargeRz, PointLitTntSphereOnTheAxisStaysBoundedAndConservesEnergy) {
-  const double radius = 0.2447;  // m, 100 kg of TNT at 1630 kg/m^3
-  Model model;
-  model.run.mode = GeometryMode::axisymmetric;
-  ParticleFillSpec fill;
-  fill.region.shape = ParticleRegion::Shape::sphere;
-  fill.region.centre = {0, 0, 0};
-  fill.region.radius = radius;
-  fill.spacing = radius / 20;
-  test::add_sph_part(
-      model, "tnt", make_material("tnt", "tnt_wang2005", {}, Parameters{}, Parameters{}, Parameters{}), fill);
-  model.detonations.push_back(DetonationPoint{{0.0, 0.0, 0.0}, 0.0});
+  const Model model = test::tnt_sphere_rz(20);
   const auto& jwl = dynamic_cast<const JwlEos&>(model.materials[0].material->eos());
   const double rho_cj = jwl.cj_state().density, p_cj = jwl.cj_state().pressure;
 

@@ -24,17 +24,7 @@ namespace {
 
 // Relative energy error of the expanding sphere after 150 us at step factor `cfl`.
 double expansion_energy_error(double cfl) {
-  const double radius = 0.2447;  // m, 100 kg of TNT at 1630 kg/m^3
-  Model model;
-  model.run.mode = GeometryMode::axisymmetric;
-  ParticleFillSpec fill;
-  fill.region.shape = ParticleRegion::Shape::sphere;
-  fill.region.centre = {0, 0, 0};
-  fill.region.radius = radius;
-  fill.spacing = radius / 10;
-  test::add_sph_part(
-      model, "tnt", make_material("tnt", "tnt_wang2005", {}, Parameters{}, Parameters{}, Parameters{}), fill);
-  model.detonations.push_back(DetonationPoint{{0.0, 0.0, 0.0}, 0.0});
+  const Model model = test::tnt_sphere_rz(10);
   SphSystem<2> sph(model, SphOptions{});
   const double e0 = sph.kinetic_energy() + sph.internal_energy();
   double dt_last = 0.0;

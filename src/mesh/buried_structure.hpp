@@ -127,8 +127,8 @@ struct BuriedStructureLayout {
   std::size_t block_count = 0;
   double reflection_time = 0.0;  // s, earliest arrival at the front wall of a wave reflected at a far edge
   // SPH zone (sph_radius > 0): particle spacings (m) and counts, the modelled charge mass (kg).
-  // charge_fill_radius (r-z): the radius of the charge's particle region (m), within a few parts in
-  // a thousand of charge_radius, chosen so the particles' volumes add up to the charge's.
+  // charge_fill_radius (r-z): the radius of the charge's particle region (m), within 1.8 % of
+  // charge_radius for 4 or more particles across, chosen so the particles' volumes add up to the charge's.
   double zone_spacing = 0.0, charge_spacing = 0.0, charge_fill_radius = 0.0;
   std::size_t zone_particles = 0, charge_particles = 0;
   double charge_model_mass = 0.0;

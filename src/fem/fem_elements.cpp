@@ -217,6 +217,7 @@ FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::v
   viscosity.assign(n, 0.0);
   density.assign(n, 0.0);
   wave_speed.assign(n, 0.0);
+  stable_wave_speed.assign(n, 0.0);
   length.assign(n, 0.0);
   speed.assign(n, 0.0);
   hourglass_displacement.assign(n * modes * D, 0.0);

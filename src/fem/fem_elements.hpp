@@ -129,6 +129,7 @@ class FemElements {
   std::vector<double> viscosity;               // Pa, artificial bulk viscosity q
   std::vector<double> density;                 // kg/m^3
   std::vector<double> wave_speed;              // m/s, sqrt(c^2 + 4G/3rho) of the latest update
+  std::vector<double> stable_wave_speed;       // m/s, the same with the stable sound speed (the dt vote's)
   std::vector<double> length;                  // m, characteristic length for dt and q
   std::vector<double> speed;                   // m/s, largest node speed of the element
   std::vector<double> hourglass_displacement;  // m, e * modes * D: stiffness-form generalised modes

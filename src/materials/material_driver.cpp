@@ -174,18 +174,24 @@ double lateral_stress(const MaterialPoints& p) {
 }
 
 // Hydrostatic compression to `target` pressure (Pa) at |rate|: the strain
-// increment per step is estimated from the current bulk modulus rho c^2; the
-// last step is solved so that the pressure lands on the target exactly.
+// increment per step is estimated from the loading stiffness, measured by a
+// trial compression of 1e-6 (the reported rho c^2 may be a stiffer release
+// branch: the soil reports the stiffness its next release can meet); the last
+// step is solved so that the pressure lands on the target exactly.
 void compress_to_pressure(PointDriver& driver, double target, double rate, int steps) {
   const MaterialPoints& p = driver.points();
-  const double bulk = p.density[0] * p.sound_speed[0] * p.sound_speed[0];
+  const double r = -std::abs(rate);
+  auto d_of = [](double x) { return SymTensor::isotropic(x); };
+  constexpr double probe_strain = 1e-6;
+  MaterialPoints probe = p;
+  driver.advance(probe, d_of(r), Spin{}, probe_strain / 3.0 / std::abs(rate));
+  double bulk = (probe.pressure[0] - p.pressure[0]) / probe_strain;
+  if (!(bulk > 0.0)) bulk = p.density[0] * p.sound_speed[0] * p.sound_speed[0];
   if (!(bulk > 0.0))
     throw std::invalid_argument(
         "hydrostatic loading to a pressure needs a material with a positive sound speed");
   const double strain_estimate = (target - p.pressure[0]) / bulk;
-  const double r = -std::abs(rate);
   const double dt = strain_estimate / steps / std::abs(rate);
-  auto d_of = [](double x) { return SymTensor::isotropic(x); };
   auto axial_of = [](double x) { return x; };
   auto pressure_of = [](const MaterialPoints& q) { return q.pressure[0]; };
   for (long k = 0; k < 100L * steps; ++k) {

@@ -41,6 +41,7 @@ void MaterialPoints::resize(std::size_t n) {
   pressure.resize(n, 0.0);
   deviator.resize(n);
   sound_speed.resize(n, 0.0);
+  stable_sound_speed.resize(n, 0.0);
   shear_modulus.resize(n, 0.0);
   plastic_strain.resize(n, 0.0);
   plastic_strain_rate.resize(n, 0.0);

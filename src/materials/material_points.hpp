@@ -5,6 +5,7 @@
 // artificial viscosity and characteristic length; the material update writes
 // the rest. Model-specific per-point variables live in `history`, registered
 // by name by the EOS / strength / damage components (style.md #5).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -51,6 +52,11 @@ struct MaterialPoints {
   std::vector<double> pressure;             // Pa, compression positive
   std::vector<SymTensor> deviator;          // Pa, deviatoric stress s; sigma = s - p I
   std::vector<double> sound_speed;          // m/s, bulk sound speed from the EOS
+  // m/s, bulk sound speed of the stiffest branch the next step can meet,
+  // where the EOS knows one stiffer than sound_speed (0 otherwise): the time
+  // step votes with it, the artificial viscosities and dashpots keep
+  // sound_speed. The three-phase soil's release on the grains alone.
+  std::vector<double> stable_sound_speed;
   std::vector<double> shear_modulus;        // Pa, current shear modulus (0 for fluids)
   std::vector<double> plastic_strain;       // effective (equivalent) plastic strain
   std::vector<double> plastic_strain_rate;  // 1/s
@@ -63,13 +69,21 @@ struct MaterialPoints {
 
   History history;
 
-  // Longitudinal wave speed used by the time step and viscosity: sqrt(c^2 + 4G/(3 rho)).
+  // Longitudinal wave speed used by the viscosity: sqrt(c^2 + 4G/(3 rho)).
   double wave_speed(std::size_t i) const;
+  // The same with the stable sound speed where it is the larger: the time step's.
+  double stable_wave_speed(std::size_t i) const;
 };
 
 // Inline: the solver gathers it for every element each cycle.
 inline double MaterialPoints::wave_speed(std::size_t i) const {
   const double c = sound_speed[i];
+  const double g = density[i] > 0.0 ? 4.0 * shear_modulus[i] / (3.0 * density[i]) : 0.0;
+  return std::sqrt(c * c + g);
+}
+
+inline double MaterialPoints::stable_wave_speed(std::size_t i) const {
+  const double c = std::max(sound_speed[i], stable_sound_speed[i]);
   const double g = density[i] > 0.0 ? 4.0 * shear_modulus[i] / (3.0 * density[i]) : 0.0;
   return std::sqrt(c * c + g);
 }

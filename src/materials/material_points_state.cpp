@@ -15,6 +15,7 @@ void visit_state(StateVisitor& v, MaterialPoints& p) {
   visit(v, "pressure", p.pressure);
   visit(v, "deviator", p.deviator);
   visit(v, "sound_speed", p.sound_speed);
+  visit(v, "stable_sound_speed", p.stable_sound_speed);
   visit(v, "shear_modulus", p.shear_modulus);
   visit(v, "plastic_strain", p.plastic_strain);
   visit(v, "plastic_strain_rate", p.plastic_strain_rate);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -20,7 +21,8 @@ constexpr double fraction_tolerance = 1e-6;
 constexpr const char* trial_columns[] = {
     "soil_trial_density",       "soil_trial_damage",       "soil_trial_pressure",
     "soil_trial_pore_pressure", "soil_trial_pore_volume",  "soil_trial_bulk_modulus",
-    "soil_trial_branch",        "soil_trial_water_volume", "soil_trial_solid_volume"};
+    "soil_trial_branch",        "soil_trial_water_volume", "soil_trial_solid_volume",
+    "soil_trial_release_modulus"};
 constexpr int trial_count = sizeof trial_columns / sizeof trial_columns[0];
 
 struct PhaseKeys {
@@ -126,6 +128,7 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
   double* const trial_branch = trial[6];
   double* const trial_water_volume = trial[7];
   double* const trial_solid_volume = trial[8];
+  double* const trial_release_modulus = trial[9];
 
   // Exceptions may not leave an OpenMP region: the first failure is kept and
   // thrown after the loop.
@@ -161,6 +164,7 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
       s.branch = static_cast<SoilBranch>(static_cast<int>(trial_branch[i]));
       s.water_volume = trial_water_volume[i];
       s.solid_volume = trial_solid_volume[i];
+      s.release_modulus = trial_release_modulus[i];
       s.converged = true;
     } else if (density_ok) {
       s = soil_state(constants_, rho0 / rho, from, damage, pressure_guess, pore_guess);
@@ -184,6 +188,7 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
     const double v = rho0 / rho;
     pts.pressure[i] = s.pressure - p0;
     pts.sound_speed[i] = std::sqrt(s.bulk_modulus / rho);
+    pts.stable_sound_speed[i] = std::sqrt(std::max(s.release_modulus, s.bulk_modulus) / rho);
     if (!commit) {
       trial_density[i] = rho;
       trial_damage[i] = damage;
@@ -194,6 +199,7 @@ void ThreePhaseSoilEos::evaluate(MaterialPoints& pts, const MaterialContext& /*c
       trial_branch[i] = static_cast<double>(s.branch);
       trial_water_volume[i] = s.water_volume;
       trial_solid_volume[i] = s.solid_volume;
+      trial_release_modulus[i] = s.release_modulus;
       continue;
     }
     branch[i] = static_cast<double>(s.branch);

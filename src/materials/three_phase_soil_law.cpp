@@ -142,6 +142,10 @@ SoilState soil_loading_state(const ThreePhaseSoilConstants& c, double v, double 
   if (s.pressure < cutoff) {
     s.pressure = cutoff;
     s.branch = SoilBranch::tension_cutoff;
+    s.release_modulus = s.bulk_modulus;
+  } else {
+    s.release_modulus =
+        soil_release_modulus(c, v, s.pressure, s.pore_pressure, s.water_volume, s.solid_volume, damage);
   }
   return s;
 }
@@ -159,6 +163,15 @@ double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double
   const double compliance = (vw > 0.0 ? vw / c.water.tangent_modulus(pore_pressure, p0) : 0.0) +
                             (vs > 0.0 ? vs / c.solid.tangent_modulus(pressure, p0) : 0.0);
   return v / compliance;
+}
+
+double soil_release_modulus(const ThreePhaseSoilConstants& c, double v, double pressure, double pore_pressure,
+                            double vw, double vs, double damage) {
+  const double p0 = c.ambient_pressure;
+  const double cutoff = p0 - (1.0 - damage) * c.tensile_strength;
+  const bool cavitation_ahead = pore_pressure - (pressure - cutoff) < cavitation_pressure;
+  if (!cavitation_ahead) return soil_unloading_modulus(c, v, pressure, pore_pressure, vw, vs);
+  return vs > 0.0 ? v * c.solid.tangent_modulus(pressure, p0) / vs : inf;
 }
 
 SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const SoilCompaction& from,
@@ -184,9 +197,9 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
     const double dvw_dp = vw > 0.0 ? -vw / c.water.tangent_modulus(pb, p0) : 0.0;
     const double dvs_dp = vs > 0.0 ? -vs / c.solid.tangent_modulus(p, p0) : 0.0;
     dv_dp = (cavitated ? 0.0 : dvw_dp) + dvs_dp;
-    // The sound speed reported stays that of water and grains together: the
-    // grains-only stretch while the water is cavitated is short (it ends when
-    // the pore water is back above zero), and would otherwise cut the time step.
+    // The sound speed reported (the viscosities' and dashpots') stays that
+    // of water and grains together; the grains-only stiffness of the
+    // cavitated stretch is the release modulus, which the time step takes.
     dv_dp_reported = dvw_dp + dvs_dp;
     f = from.volume + (vw - vw_max) + (vs - vs_max) - v;
     s.pressure = p;
@@ -226,6 +239,7 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
         s.converged = true;
         const double v_cut = v + f;
         s.bulk_modulus = -v_cut * v_cut / (v * dv_dp_reported);
+        s.release_modulus = -v_cut * v_cut / (v * dv_dp);  // grains alone where cavitated there
         s.branch = SoilBranch::tension_cutoff;
         return s;
       }
@@ -244,6 +258,8 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
     p = next;
   }
   s.bulk_modulus = -v / dv_dp_reported;
+  s.release_modulus =
+      soil_release_modulus(c, v, s.pressure, s.pore_pressure, s.water_volume, s.solid_volume, damage);
   s.branch = SoilBranch::unloading;
   return s;
 }

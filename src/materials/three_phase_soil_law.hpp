@@ -76,6 +76,9 @@ struct SoilState {
   double pore_pressure = 0.0;  // absolute, Pa
   double pore_volume = 0.0;    // V_p / V0
   double bulk_modulus = 0.0;   // -v dp/dv on the current branch, Pa
+  // -v dp/dv of the stiffest stretch a release from this state meets, Pa
+  // (soil_release_modulus; at the cut-off, the branch's there): the time step's.
+  double release_modulus = 0.0;
   double water_volume = 0.0;   // v_w at the pore pressure of the last evaluation (/V0)
   double solid_volume = 0.0;   // v_s at the pressure of the last evaluation (/V0)
   SoilBranch branch = SoilBranch::loading;
@@ -102,6 +105,15 @@ double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double
 // The same with v_w(p_b) and v_s(p) already known (no pow).
 double soil_unloading_modulus(const ThreePhaseSoilConstants& c, double v, double pressure,
                               double pore_pressure, double water_volume, double solid_volume);
+
+// The stiffest tangent -v dp/dv that a release from (v, p, p_b; damage D)
+// meets on the unloading branch: the pore pressure falls with the total
+// pressure (the skeleton stress stays locked), and where it reaches the
+// cavitation pressure before the total pressure reaches the cut-off, the rest
+// of the release is carried by the grains alone. Otherwise the water-solid
+// modulus of soil_unloading_modulus.
+double soil_release_modulus(const ThreePhaseSoilConstants& c, double v, double pressure, double pore_pressure,
+                            double water_volume, double solid_volume, double damage);
 
 // The whole law: loading when v < from.volume, otherwise unloading; the
 // tension cut-off p >= p0 - (1 - D) p_t on either branch. The guesses only

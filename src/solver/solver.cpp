@@ -443,6 +443,7 @@ void Solver<D>::gather_element_state() {
       s.zz -= pressure;
       elements_.stress[e] = s;
       elements_.wave_speed[e] = pts->wave_speed(p);
+      elements_.stable_wave_speed[e] = pts->stable_wave_speed(p);
       const double energy = elements_.mass[e] * pts->specific_energy[p];
       internal += energy;
       if (!std::isfinite(s.xx + s.yy + s.zz + s.xy + s.yz + s.zx) ||
@@ -479,7 +480,7 @@ void Solver<D>::choose_time_step() {
     for (std::int64_t k = 0; k < ne; ++k) {
       const std::size_t e = static_cast<std::size_t>(k);
       if (elements_.eroded[e]) continue;
-      double t = elements_.length[e] / (elements_.wave_speed[e] + elements_.speed[e]);
+      double t = elements_.length[e] / (elements_.stable_wave_speed[e] + elements_.speed[e]);
       if (!(t >= 0.0)) t = -1.0;  // NaN: this element is reported as the collapse
       if (t < local) {
         local = t;
@@ -532,7 +533,7 @@ void Solver<D>::choose_time_step() {
           EntityKind::element, best_e + 1, "time step",
           fmt::format("dt {:.6g} s is below min_dt {:.6g} s (l = {:.6g} m, c = {:.6g} m/s, |v| = {:.6g} m/s)",
                       dt, run.min_dt, elements_.length[static_cast<std::size_t>(best_e)],
-                      elements_.wave_speed[static_cast<std::size_t>(best_e)],
+                      elements_.stable_wave_speed[static_cast<std::size_t>(best_e)],
                       elements_.speed[static_cast<std::size_t>(best_e)])));
     fail(NumericalError(EntityKind::model, 0, "time step", fmt::format("dt {:.6g} s is not usable", dt)));
   }

@@ -68,6 +68,7 @@ void Solver<D>::visit_state(StateVisitor& v) {
     visit(v, "viscosity", e.viscosity);
     visit(v, "density", e.density);
     visit(v, "wave_speed", e.wave_speed);
+    visit(v, "stable_wave_speed", e.stable_wave_speed);
     visit(v, "length", e.length);
     visit(v, "speed", e.speed);
     visit(v, "hourglass_displacement", e.hourglass_displacement);

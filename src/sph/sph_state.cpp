@@ -40,6 +40,7 @@ void SphSystem<D>::visit_state(StateVisitor& v) {
   visit(v, "stress_term", p.stress_term);
   visit(v, "tensile_term", p.tensile_term);
   visit(v, "wave_speed", p.wave_speed);
+  visit(v, "stable_wave_speed", p.stable_wave_speed);
   visit(v, "correction", p.correction);
   visit(v, "viscosity_alpha", p.viscosity_alpha);
   visit(v, "acceleration", p.acceleration);

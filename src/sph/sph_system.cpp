@@ -47,6 +47,7 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   p_.stress_term.resize(n);
   p_.tensile_term.resize(n);
   p_.wave_speed.resize(n);
+  p_.stable_wave_speed.resize(n);
   p_.viscosity_alpha.assign(
       n, options_.viscosity_switch ? options_.viscosity_alpha_min : options_.viscosity_alpha);
   p_.correction.assign(n, SymTensor::identity());
@@ -147,6 +148,7 @@ void SphSystem<D>::gather_material_state() {
     p_.stress[i] = sigma;
     p_.pressure[i] = p;
     p_.wave_speed[i] = pts.wave_speed(k);
+    p_.stable_wave_speed[i] = pts.stable_wave_speed(k);
     p_.plastic_strain[i] = pts.plastic_strain[k];
     p_.damage[i] = pts.damage[k];
     p_.temperature[i] = pts.temperature[k];
@@ -221,6 +223,7 @@ void SphSystem<D>::prepare_neighbours() {
   p_.stress_term.resize(total);
   p_.tensile_term.resize(total);
   p_.wave_speed.resize(total);
+  p_.stable_wave_speed.resize(total);
   p_.correction.resize(total, SymTensor::identity());
   p_.viscosity_alpha.resize(total, options_.viscosity_alpha);
   refresh_ghosts();
@@ -259,6 +262,7 @@ void SphSystem<D>::sort_by_cell() {
   permute(p.stress_term, order);
   permute(p.tensile_term, order);
   permute(p.wave_speed, order);
+  permute(p.stable_wave_speed, order);
   permute(p.correction, order);
   permute(p.id, order);
   permute(p.acceleration, order);
@@ -312,7 +316,7 @@ TimeStepLimit SphSystem<D>::stable_time_step() const {
     for (std::size_t i = 0; i < n; ++i) {
       const double c = p_.wave_speed[i];
       const double speed =
-          c + norm(p_.velocity[i]) +
+          p_.stable_wave_speed[i] + norm(p_.velocity[i]) +
           0.6 * (options_.viscosity_alpha * c + options_.viscosity_beta * p_.compression_rate[i]);
       const double dt =
           speed > 0.0 ? p_.smoothing_length[i] / speed : std::numeric_limits<double>::infinity();

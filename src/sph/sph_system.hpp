@@ -75,6 +75,7 @@ struct ParticleArrays {
   std::vector<SymTensor> stress_term;    // S = w sigma / eta (= sigma / rho), m^2/s^2
   std::vector<SymTensor> tensile_term;   // artificial stress R, scaled as sigma / rho^2
   std::vector<double> wave_speed;        // m/s, sqrt(c^2 + 4G/3rho)
+  std::vector<double> stable_wave_speed;  // m/s, the same with the stable sound speed (the dt vote's)
   std::vector<SymTensor> correction;     // kernel-gradient correction B = M^-1 (identity when off)
   std::vector<double> viscosity_alpha;   // linear viscosity coefficient (SphOptions::viscosity_switch)
   // --- particles only ---

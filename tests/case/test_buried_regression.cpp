@@ -97,6 +97,10 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
   const auto a = column_peaks(out / "group_A.csv");
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
+  // Updated 2 Dec 2026: the soil reports the stiffness of its release on the grains alone as a
+  // stable sound speed, which the time step takes (materials/three_phase_soil_law.cpp,
+  // soil_release_modulus): the step is shorter wherever compacted soil may release, the values
+  // move only by that. t2 6.77311 -> 7.01636 m/s (+3.6 %), t9 +1.9 %, A1 +1.8 %, the others < 1 %.
   // Updated 2 Dec 2026: the SPH kinematic sums weigh each neighbour by its mid-step planar density
   // (sph_sums.cpp, update_state), which removes a first-order lag of the p dV work behind the forces'
   // work: the energy balance closes to 0.11 %, was 1.0 %. B2 3.49774e7 -> 3.20568e7 Pa (-8.3 %),
@@ -118,12 +122,12 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
   // A1 1.74867e8 -> 1.65966e8 Pa, t9 1.28569e7 -> 9.85323e6 Pa (-23 %), t2 6.41329 -> 6.90739 m/s.
   verify_peaks("Reduced buried-structure case: peak ", "regression ",
                {
-                   {"group_B B1 pressure", 1.08095e8, "Pa", b.at("B1.pressure")},
-                   {"group_B B2 pressure", 1.74972e6, "Pa", b.at("B2.pressure")},
-                   {"group_A A1 pressure", 1.66926e8, "Pa", a.at("A1.pressure")},
-                   {"group_B B1 speed (velocity_x)", 26.5082, "m/s", b.at("B1.velocity_x")},
-                   {"structure t9 stress_xx", 9.74290e6, "Pa", s.at("t9.stress_xx")},
-                   {"structure t2 velocity_x", 6.77311, "m/s", s.at("t2.velocity_x")},
+                   {"group_B B1 pressure", 1.08780e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 1.73535e6, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 1.69863e8, "Pa", a.at("A1.pressure")},
+                   {"group_B B1 speed (velocity_x)", 26.6506, "m/s", b.at("B1.velocity_x")},
+                   {"structure t9 stress_xx", 9.92693e6, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 7.01636, "m/s", s.at("t2.velocity_x")},
                });
 
   // `camouflet report` on the same output: the page and its figures (needs
@@ -150,7 +154,8 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   ASSERT_EQ(model.joins.size(), 1u);
   const RunSummary summary = run_model(model, test::quiet_run_options(out));
   ASSERT_FALSE(summary.failed) << summary.stop_reason;
-  // With the SPH zone the balance closes to 0.11 % here (1.0 % with the pair weights at the
+  // With the SPH zone the balance closes to 0.16 % here (0.11 % with the longer step the soil's
+  // release did not bound; 1.0 % with the pair weights at the
   // start of the step, 4.1 % with the coarser, 2.4 % heavy charge of the generator before; the join resolves
   // the shock passing it only to first order in the spacing, see tests/case/test_joined_case.cpp), against
   // 0.2 % for the all-FEM case.
@@ -161,6 +166,12 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
   const auto bars = column_peaks(out / "bars.csv");
+  // Updated 2 Dec 2026: the soil reports the stiffness of its release on the grains alone as a
+  // stable sound speed, which the time step takes (materials/three_phase_soil_law.cpp,
+  // soil_release_modulus): the step is shorter wherever compacted soil may release, the values
+  // move only by that. B2 3.20568e7 -> 3.51030e7 Pa (+9.5 %, the zone's corner), A1 3.23224e8 ->
+  // 3.47361e8 Pa (+7.5 %), rebar 4.23915e-3 -> 4.53936e-3 (+7.1 %), t9 8.44543e7 -> 8.75975e7 Pa
+  // (+3.7 %); B1 and t2 moved less than 0.5 %. The energy balance closes to 0.16 % (0.11 %).
   // Updated 2 Dec 2026: the SPH kinematic sums weigh each neighbour by its mid-step planar density
   // (sph_sums.cpp, update_state), which removes a first-order lag of the p dV work behind the forces'
   // work: the energy balance closes to 0.11 %, was 1.0 %. B2 3.49774e7 -> 3.20568e7 Pa (-8.3 %),
@@ -191,12 +202,12 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   // 19.2332 m/s, rebar 2.39349e-3 -> 2.70126e-3; B1 and A1 moved less than 3 %.
   verify_peaks("Reduced buried-structure case with SPH zone: peak ", "regression (SPH zone) ",
                {
-                   {"group_B B1 pressure", 2.34679e8, "Pa", b.at("B1.pressure")},
-                   {"group_B B2 pressure", 3.20568e7, "Pa", b.at("B2.pressure")},
-                   {"group_A A1 pressure", 3.23224e8, "Pa", a.at("A1.pressure")},
-                   {"structure t9 stress_xx", 8.44543e7, "Pa", s.at("t9.stress_xx")},
-                   {"structure t2 velocity_x", 19.6426, "m/s", s.at("t2.velocity_x")},
-                   {"rebar front_out.1 axial_strain", 4.23915e-3, "-", bars.at("front_out.1.axial_strain")},
+                   {"group_B B1 pressure", 2.35376e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 3.51030e7, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 3.47361e8, "Pa", a.at("A1.pressure")},
+                   {"structure t9 stress_xx", 8.75975e7, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 19.7105, "m/s", s.at("t2.velocity_x")},
+                   {"rebar front_out.1 axial_strain", 4.53936e-3, "-", bars.at("front_out.1.axial_strain")},
                });
 }
 

@@ -209,8 +209,14 @@ TEST(ThreePhaseSoilEos, UnloadingFrom100MPaFollowsTheWaterSolidRule) {
           pts.pressure[0], 1e-12, true, "Pa"});
 }
 
-// c^2 = dp/drho along the branch the point is on (finite differences).
-TEST(ThreePhaseSoilEos, SoundSpeedIsTheBranchTangent) {
+// The sound speed is the tangent dp/drho of the branch the point is on (the
+// viscosities and dashpots use it); the stable sound speed, which the time
+// step takes, is the stiffest tangent the release from the point can meet:
+// never below the local tangent anywhere on the branch from the maximum
+// compaction down to the tension cut-off, equal to it on the stretch where
+// the pore water has cavitated (grains alone), and no stiffer than that.
+// Finite differences along the whole branch.
+TEST(ThreePhaseSoilEos, SoundSpeedIsTheBranchTangentAndTheStableOneBoundsTheRelease) {
   const auto eos = soil_eos();
   const double rho0 = eos->reference_density();
   Material m("soil", eos);
@@ -219,22 +225,57 @@ TEST(ThreePhaseSoilEos, SoundSpeedIsTheBranchTangent) {
   pts.density[0] = 1.05 * rho0;  // loading to ~ tens of MPa
   eos->evaluate(pts, MaterialContext{}, true);
   const double rho_max = pts.density[0];
+  const double c_release = pts.stable_sound_speed[0];  // at the maximum, after the commit
+  double c_stable = 0.0;
   auto probe = [&](double rho, double& p, double& c) {
     pts.density[0] = rho;
     eos->evaluate(pts, MaterialContext{}, false);
     p = pts.pressure[0];
     c = pts.sound_speed[0];
+    c_stable = pts.stable_sound_speed[0];
   };
   double p1, p2, c1, c2;
-  const double d = 1e-6 * rho_max;
+  const double d = 1e-7 * rho_max;
   probe(rho_max * 1.01, p1, c1);  // loading
   probe(rho_max * 1.01 + d, p2, c2);
   verify({"Three-phase soil: loading sound speed", "c^2 = dp/drho (finite difference)", (p2 - p1) / d,
           c1 * c1, 1e-4, true, "m^2/s^2"});
-  probe(rho_max * 0.999, p1, c1);  // unloading
-  probe(rho_max * 0.999 + d, p2, c2);
+  probe(rho_max * 0.9999, p1, c1);  // unloading, the water-solid stretch
+  probe(rho_max * 0.9999 + d, p2, c2);
   verify({"Three-phase soil: unloading sound speed", "c^2 = dp/drho (finite difference)", (p2 - p1) / d,
           c1 * c1, 1e-4, true, "m^2/s^2"});
+
+  // Walk the release branch from rho_max to the cut-off.
+  double worst_under = 0.0, stiffest = 0.0, cavitated_error = 0.0;
+  int cavitated = 0, water = 0;
+  for (int k = 1; k <= 10000; ++k) {
+    const double rho = rho_max * (1.0 - 2e-6 * k);
+    probe(rho - d, p1, c1);
+    probe(rho, p2, c2);
+    if (p1 <= -0.2e6 / 0.75 * (1.0 - 1e-9)) break;  // the cut-off (intact bonds)
+    const double tangent = (p2 - p1) / d;
+    const double stable2 = c_stable * c_stable;
+    worst_under = std::max(worst_under, tangent / stable2 - 1.0);
+    stiffest = std::max(stiffest, tangent);
+    // The grains-only stretch: the tangent is the stable one, within the FD error.
+    if (std::abs(tangent / stable2 - 1.0) < 1e-3) {
+      ++cavitated;
+      cavitated_error = std::max(cavitated_error, std::abs(tangent / stable2 - 1.0));
+    } else {
+      ++water;
+    }
+  }
+  EXPECT_GT(cavitated, 5) << "the release must reach the cavitated stretch";
+  EXPECT_GT(water, 5) << "the release must start on the water-solid stretch";
+  verify({"Three-phase soil: release from 5 % compression, stable c^2 against dp/drho along the branch",
+          "never below the local tangent (finite differences)", 0.0, std::max(worst_under, 0.0), 1e-4, false,
+          "relative"});
+  verify({"Three-phase soil: release from 5 % compression, stable c^2 on the cavitated stretch",
+          "dp/drho of the grains alone (finite differences)", 0.0, cavitated_error, 1e-4, false, "relative"});
+  verify({"Three-phase soil: release from 5 % compression, stable c^2 at the maximum compaction",
+          "the stiffest dp/drho of the release branch (grains alone at the cut-off, where the expanded "
+          "volume raises c^2 = K v / rho0 by about 1 %)",
+          stiffest, c_release * c_release, 0.02, true, "m^2/s^2"});
 }
 
 // Preset `sandy_clay_wang2005_seismic` (theory section 12): K_p solved from the

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
+#include <string>
 
 #include "case/case_fingerprint.hpp"
 #include "case/case_reader.hpp"
@@ -87,10 +89,26 @@ TEST(Restart, DamagedLatestCheckpointIsRefusedAndThePreviousOneUsed) {
   run_model(read_case(case_file), options_for(root / "out", case_file));
   auto list = list_checkpoints(root / "out" / "checkpoints");
   ASSERT_EQ(list.size(), 3u);
-  // Flip one byte inside the data of the newest: its checksum no longer matches.
+  // Flip one byte inside the data of the newest: its checksum no longer
+  // matches. The byte is found inside an array's stored bytes (the file's
+  // middle may be padding, which no checksum covers): 64 bytes from the middle
+  // of an array, varied enough to occur once in the file.
   {
+    const CheckpointData data = read_checkpoint(list.front());
     std::string bytes = test::read_text(list.front());
-    bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x5a);
+    std::size_t flip = std::string::npos;
+    for (const auto& [name, a] : data.arrays) {
+      if (a.bytes.size() < 128) continue;
+      const std::string needle(reinterpret_cast<const char*>(a.bytes.data()) + a.bytes.size() / 2, 64);
+      if (std::set<char>(needle.begin(), needle.end()).size() < 16) continue;
+      const std::size_t at = bytes.find(needle);
+      if (at != std::string::npos && bytes.rfind(needle) == at) {
+        flip = at + 32;
+        break;
+      }
+    }
+    ASSERT_NE(flip, std::string::npos) << "no array's bytes found in the file";
+    bytes[flip] = static_cast<char>(bytes[flip] ^ 0x5a);
     test::write_text(list.front(), bytes);
   }
   EXPECT_THROW(read_checkpoint(list.front()), CheckpointError);

@@ -91,23 +91,25 @@ TEST(NearFieldHourglass, StiffnessFormRuns30msWithoutTanglingOrCrossingTheAxis) 
   EXPECT_TRUE(quiet) << r.warnings;
 }
 
-// The viscous form: the soil elements next to the axis drift into a sawtooth
-// and one tangles (measured: at 10.2 ms, the element at r = 0.025 m, z =
-// -2.025 m, just below the zone; no node crosses the axis by 30 ms, which the
-// run reaches in 86 s against the stiffness form's 28 s). The run stops at
-// the first tangled element.
-TEST(NearFieldHourglass, ViscousFormTanglesAnElementNextToTheAxis) {
+// The viscous form tangles the soil within 30 ms. Where: while the time step
+// did not bound the compacted soil's release on its grains (before 3c26797,
+// 2 Dec 2026), the elements next to the axis drifted into a sawtooth and the
+// element at r = 0.025 m, z = -2.025 m, just below the zone, tangled at
+// 10.2 ms. With the soil's stable sound speed the axis column holds, and the
+// first tangled element is at the zone's outer top corner (r = 1.525 m,
+// z = -0.175 m) at 13.7 ms, where the join's face meets the free surface. The
+// run stops at the first tangled element.
+TEST(NearFieldHourglass, ViscousFormTanglesAnElementWithin30ms) {
   const NearFieldRun r = run_near_field("viscous", true);
   const bool tangles = r.first_tangled >= 0.0;
   test::record_check("Joined near field (r-z, 100 kg TNT), viscous hourglass form, 30 ms",
-                     "an element next to the axis tangles (the failure that chose the stiffness form)",
+                     "an element tangles (the failure that chose the stiffness form)",
                      tangles ? fmt::format("tangled at {:.3g} ms, element centre r = {:.3f} m, z = {:.3f} m",
                                            1e3 * r.first_tangled, r.tangled_r, r.tangled_z)
                              : "no tangled element within 30 ms",
                      tangles);
   EXPECT_TRUE(tangles)
-      << "the viscous form no longer tangles the soil next to the axis: update docs/buried-structure.md";
-  EXPECT_LT(r.tangled_r, 0.25) << "the first tangled element is expected next to the axis";
+      << "the viscous form no longer tangles the soil within 30 ms: update docs/buried-structure.md";
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Reinforced-concrete keys (issue 6, docs/case-format.md "Reinforcement"):
+// Reinforced-concrete keys (docs/case-format.md "Reinforcement and erosion"):
 // `rebar_layers = [...]` on a block part (thin steel layers sharing nodes
 // with the concrete), [[bars]] (embedded bar elements) and a material's
 // `erosion = {...}`.

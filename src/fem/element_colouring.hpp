@@ -1,5 +1,5 @@
 #pragma once
-// Element colouring for race-free force assembly on threads (issue 10): the
+// Element colouring for race-free force assembly on threads: the
 // elements are split into colours such that no two elements of one colour
 // share a node, so the elements of a colour can scatter their nodal forces
 // straight into the global force array from any number of threads at once.
@@ -12,7 +12,8 @@
 // elements). Two blocks of one colour share no node; the elements inside a
 // block are scattered one after the other by one thread, so they may. Blocks
 // keep the memory locality of the element order (consecutive elements share
-// nodes) that single-element colours lose. docs/performance.md, "Session 6".
+// nodes) that single-element colours lose. docs/performance.md, "Colouring
+// against per-thread buffers".
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -38,7 +38,7 @@ inline double sqrt_of(double a) {
   return std::sqrt(a);
 }
 // Written as whole-register operations: a loop over lanes compiled to one
-// extract and one insert per lane (docs/performance.md, session 4). The
+// extract and one insert per lane (docs/performance.md, "hex8 at 74eacb6"). The
 // results are those of the scalar versions lane by lane (a compare and a
 // select; the correctly rounded IEEE square root).
 inline Pack max_of(const Pack& a, const Pack& b) {

@@ -25,8 +25,8 @@ struct ViscosityControl {
 };
 
 // How add_internal_forces assembles nodal forces on several threads without
-// write conflicts (docs/performance.md, "Session 6: colouring against
-// per-thread buffers"). All give the same forces to round-off.
+// write conflicts (docs/performance.md, "Colouring against per-thread
+// buffers"). All give the same forces to round-off.
 //   buffers:       packs of consecutive elements; each thread scatters into its
 //                  own zeroed copy of the force array, the copies are added in
 //                  thread order after the loop (the sums depend on the thread
@@ -133,7 +133,7 @@ class FemElements {
   std::vector<double> length;                  // m, characteristic length for dt and q
   std::vector<double> speed;                   // m/s, largest node speed of the element
   std::vector<double> hourglass_displacement;  // m, e * modes * D: stiffness-form generalised modes
-  std::vector<char> eroded;                    // 1: eroded (no forces, no kinematics; issue 6)
+  std::vector<char> eroded;                    // 1: eroded (no forces, no kinematics)
   // Own hourglass control (set_hourglass; empty: the `hg` of add_internal_forces for all).
   std::vector<double> hourglass_coefficient;  // FB 1981 kappa; 0 = no control
   std::vector<char> hourglass_stiffness;      // 1: stiffness form, 0: viscous

@@ -9,7 +9,7 @@
 // scalar code's operations in the same order (no FMA: the sph layer is built
 // with -ffp-contract=off), so each pair term has the scalar's bits; only the
 // order in which a particle's pair terms are added differs (per lane, then
-// across lanes). docs/performance.md, "Session 4: SPH".
+// across lanes). docs/performance.md, "SPH at 2d71b6d".
 //
 // Width: 8 doubles with AVX-512, 4 with AVX, 2 with SSE2 (the target of the
 // sph layer, CMake option CAMOUFLET_NATIVE). Include this header only from

@@ -265,7 +265,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const auto& inv_eta = inverse_density_;
   const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
   // One parallel region: the point factors (barrier), the rows, their sums (docs/performance.md,
-  // "Session 6: fewer parallel regions").
+  // "Fewer parallel regions").
 #pragma omp parallel
   {
     fill_point_factors();
@@ -412,7 +412,7 @@ void SphSystem<D>::kick(double dt) {
   const HeatPoint* const hp = heat_points_.data();
   // One parallel region: the kick with the particles' heating records (v(n-1/2) + v(n+1/2) and m
   // in one 32-byte record, 3-D: one line per neighbour), the ghosts' (one thread), the heating
-  // rows, their sums (docs/performance.md, "Session 6: fewer parallel regions").
+  // rows, their sums (docs/performance.md, "Fewer parallel regions").
 #pragma omp parallel
   {
     if (stored) {
@@ -674,7 +674,7 @@ void SphSystem<D>::update_state(double dt, double time) {
   std::size_t limited = 0;
   const MaterialContext ctx{dt, time};
   // One parallel region from the point factors to the material batches (docs/performance.md,
-  // "Session 6: fewer parallel regions"): the point factors (barrier), the rows (barrier), then
+  // "Fewer parallel regions"): the point factors (barrier), the rows (barrier), then
   // each row's sums, its end-of-step eta, h and x and its material point's inputs in one pass.
 #pragma omp parallel reduction(+ : limited)
   {

@@ -9,8 +9,8 @@
 // total adds, in block order, the copies of the blocks whose windows hold it
 // (its own block and the few earlier blocks that reach past their end). The
 // zeroing and the reduction are then O(n) in total instead of O(threads x n),
-// and each thread touches mostly its own rows (docs/performance.md, "Session
-// 5: SPH threads").
+// and each thread touches mostly its own rows (docs/performance.md, "SPH
+// threads at dbbebad").
 //
 // The blocks depend only on the lists and on the number of blocks, not on
 // which thread runs a block: a fixed thread count is bit-identical run to run,

@@ -2,7 +2,7 @@
 // (the law is barotropic: same density, damage and compaction, same root)
 // instead of solving again from it. Both are converged roots of the same
 // equation, so they may differ only within the Newton tolerance |F| <= 1e-12 v
-// (docs/theory/three-phase-soil.md §2, docs/performance.md "Session 4").
+// (docs/theory/three-phase-soil.md §2, docs/performance.md "Soil and 2-D quads at 73f910d").
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // BoundaryConditions<D>::visit_state: the load and reaction forces of the
-// previous cycles that the time-centred boundary work needs (checkpoints, issue 9).
+// previous cycles that the time-centred boundary work needs (checkpoints).
 #include "boundary/boundary_conditions.hpp"
 
 namespace camouflet {

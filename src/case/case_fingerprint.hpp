@@ -1,5 +1,5 @@
 #pragma once
-// What a restart must not change (issue 9, docs/reliability.md): every key of
+// What a restart must not change (docs/reliability.md): every key of
 // the case file as "dotted.key = value" lines, sorted, except the keys a
 // restart may change: run.end_time, run.max_cycles, [output], [checkpoint]
 // and title. The checkpoint stores it; `run --restart` compares and names the

@@ -71,7 +71,7 @@ void read_block(TomlReader& block, Model& model, const std::string& name, int pa
   }
 }
 
-// `fill = { shape = ..., spacing = ... }` of an SPH part (issue 3; docs/case-format.md).
+// `fill = { shape = ..., spacing = ... }` of an SPH part (docs/case-format.md).
 ParticleFillSpec read_fill(TomlReader& fill, Model& model, int part_index,
                            const std::filesystem::path& case_dir) {
   const int dim = model.dimension();

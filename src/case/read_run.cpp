@@ -29,7 +29,7 @@ void read_run(TomlReader& r, Model& model) {
   run.dt_growth = r.number("dt_growth", run.dt_growth);
   if (!(run.dt_growth >= 1.0)) r.fail("dt_growth", fmt::format("must be at least 1, got {}", run.dt_growth));
   if (r.has("energy_error_limit")) run.energy_error_limit = r.positive("energy_error_limit");
-  // Domain box (issue 9): a node or particle leaving it stops the run.
+  // Domain box: a node or particle leaving it stops the run.
   const int dim = dimension_of(run.mode);
   if (r.has("domain_min")) run.domain_min = r.vector("domain_min", dim);
   if (r.has("domain_max")) run.domain_max = r.vector("domain_max", dim);

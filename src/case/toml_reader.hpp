@@ -2,7 +2,7 @@
 // A TOML table as the case reader sees it: typed getters that turn every
 // problem into an InputError naming file, line and the dotted key, and a
 // finish() that refuses any key nobody asked for, suggesting the nearest
-// valid one (issue 2.7). Every section reader works through this class, so no
+// valid one. Every section reader works through this class, so no
 // key of the case file is ever silently ignored.
 #include <toml++/toml.h>
 

@@ -2,7 +2,7 @@
 // Named model parameters as read from a case file (or a preset), each with the
 // place it came from. Material and boundary factories take what they need by
 // name; `finish()` then refuses any key nobody asked for, suggesting the
-// nearest valid one, so a misspelt key is never silently ignored (issue 2.7).
+// nearest valid one, so a misspelt key is never silently ignored.
 #include <map>
 #include <optional>
 #include <set>

@@ -1,5 +1,5 @@
 #pragma once
-// The run's state as a list of named arrays (issue 9, checkpoints): every
+// The run's state as a list of named arrays (checkpoints): every
 // class that holds state a restart needs offers `visit_state(StateVisitor&)`
 // and names each of its arrays and scalars there. A checkpoint writer copies
 // them out; a reader fills them back in, resizing first. Adding new state

@@ -68,7 +68,7 @@ struct Spin {
 };
 
 // Jaumann (co-rotational) increment of a symmetric tensor over dt:
-// s_dot = W s - s W, as used by the objective stress rate (issue 2).
+// s_dot = W s - s W, as used by the objective stress rate.
 // Inline: the material update calls it for every point and cycle (twice in
 // the soil), and the call cost more than its 30 flops (docs/performance.md).
 inline SymTensor jaumann_increment(const SymTensor& s, const Spin& w, double dt) {

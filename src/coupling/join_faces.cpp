@@ -1,4 +1,4 @@
-// Interface faces of the SPH-FEM join at its corners (issue 8).
+// Interface faces of the SPH-FEM join at its corners.
 //
 // A coupling point sends the reactions of its pairs to the interface face
 // nearest to it. Along a straight interface that is right: the particles

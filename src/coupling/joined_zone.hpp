@@ -1,5 +1,5 @@
 #pragma once
-// Zone set-up of a joined SPH-FEM model (issue 7, "Zone set-up"): one region
+// Zone set-up of a joined SPH-FEM model: one region
 // is declared SPH, the FEM mesh around it is given; make_joined_zone cuts the
 // hole (every element whose centre lies inside the region), fills it with the
 // part's particles (mesh/particle_fill.hpp, uniform or graded; a box region is

@@ -448,7 +448,7 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
         // The r-z ring weights. With ring masses the pair force is 2 pi A_i A_j (r_i sigma_i + r_j sigma_j)
         // . grad W (volume form; A the planar areas). The face takes it with the point's own ring
         // radius r_j in both terms, R = -2 pi r_j A_i A_j (sigma_i + sigma_j) . grad W, the force an
-        // element of ring radius r_j transmits (issue 8, docs/theory/coupling.md):
+        // element of ring radius r_j transmits (docs/theory/coupling.md):
         // * radially, the part weighted by r_i holds besides the traction the point's share of the
         //   geometric source sigma_rr / r e_r of div(r sigma) / r, a radial force that does not shrink
         //   with the spacing. A particle needs it (its hoop term balances it), the element does not

@@ -1,6 +1,6 @@
 #pragma once
 // Embedded reinforcement bars (the LS-DYNA "beam in solid" / constrained-bar
-// idea, issue 6): 2-node truss segments whose end points are fixed at t = 0 in
+// idea): 2-node truss segments whose end points are fixed at t = 0 in
 // host elements by their isoparametric coordinates. A bar node has no degrees
 // of freedom of its own: its position and velocity are interpolated from the
 // host nodes, and its mass and force are spread back to them with the same
@@ -48,7 +48,7 @@ class EmbeddedBars {
   double mass() const;                           // kg (plane strain: per metre of depth)
   // Smallest segment length / longitudinal wave speed (s) and its segment (0-based).
   double stable_time_step(const double* x, std::size_t& segment) const;
-  // Every array a restart needs (checkpoints, issue 9): the bars' material
+  // Every array a restart needs (checkpoints): the bars' material
   // points, strains and the lateral-rate guesses of the last step.
   void visit_state(StateVisitor& visitor);
 

@@ -1,5 +1,5 @@
 // EmbeddedBars<D>::visit_state: what a restart of a run with embedded bars
-// needs (checkpoints, issue 9). Geometry and host weights are rebuilt from
+// needs (checkpoints). Geometry and host weights are rebuilt from
 // the case; the evolving state is listed here.
 #include "fem/embedded_bars.hpp"
 #include "materials/material_points_state.hpp"

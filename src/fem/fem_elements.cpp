@@ -297,7 +297,7 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
     const int count = lanes.count;
     bool any = false;
     for (int l = 0; l < count; ++l) any = any || !eroded[lanes.at(l)];
-    if (!any) return 0.0;  // an eroded element carries no force (issue 6)
+    if (!any) return 0.0;  // an eroded element carries no force
     // The lanes' hourglass control: kappa and form per lane (the same
     // arithmetic per lane whichever forms share the pack).
     Pack kappa = broadcast(hg_kappa);
@@ -680,7 +680,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         // The one-point area is the mean of the corner Jacobians: a quad whose edges cross (top
         // nodes driven past the bottom ones on one side only) keeps a positive area while two
         // corners have turned inside out, and its forces and density are then meaningless
-        // (issue 8: such an element set the time step for milliseconds unnoticed).
+        // (such an element in the buried-structure case set the time step for milliseconds unnoticed).
         if (corner_jacobians_negative<D>(xe, l) >= 2)
           tangled = std::min(tangled, static_cast<std::int64_t>(e));
       }

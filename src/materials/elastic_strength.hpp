@@ -1,7 +1,7 @@
 #pragma once
 // Isotropic elastic and elastic-perfectly-plastic (von Mises) deviatoric
 // response: the shear half of linear elasticity and the simplest metal
-// plasticity (issue 2). Hypoelastic: s_dot = 2 G dev(D) on the Jaumann-rotated
+// plasticity. Hypoelastic: s_dot = 2 G dev(D) on the Jaumann-rotated
 // deviator that Material::update hands over.
 #include "materials/material.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Linear equation of state: p = K (rho / rho0 - 1), independent of energy.
-// The volumetric half of isotropic linear elasticity (issue 2).
+// The volumetric half of isotropic linear elasticity.
 #include "materials/material.hpp"
 
 namespace camouflet {

@@ -14,7 +14,7 @@
 
 namespace camouflet {
 
-// Where and when an explosive is lit (programmed burn, issue 4).
+// Where and when an explosive is lit (programmed burn).
 struct DetonationPoint {
   std::array<double, 3> position{};  // m (2-D: third component 0)
   double time = 0.0;                 // s, lighting time of the point itself

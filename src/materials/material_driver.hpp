@@ -3,7 +3,7 @@
 // strain (or mixed strain/stress) path through Material::setup and
 // Material::update, the exact code path of FEM integration points and SPH
 // particles. This is how materials are calibrated and checked
-// (`camouflet material-test`, issue 4) and what the material tests build on.
+// (`camouflet material-test`) and what the material tests build on.
 //
 // Conventions: x is the axial direction, y and z the lateral ones. Strain
 // rates are logarithmic (true) rates, 1/s; a negative axial rate shortens the

@@ -1,5 +1,5 @@
 #pragma once
-// Programmed burn of a high explosive (issue 4): each point is lit when the
+// Programmed burn of a high explosive: each point is lit when the
 // detonation front, running at the detonation velocity D in straight lines
 // from the detonation points, reaches it; its burn fraction is the larger of
 // a time ramp while the front crosses a few point sizes and the volumetric

@@ -1,6 +1,6 @@
 #pragma once
-// Built-in structured block mesher (issue 2, "parts: a FEM mesh from a built-in
-// structured/graded block generator"). Blocks are appended to one FemMesh;
+// Built-in structured block mesher (parts: a FEM mesh from a built-in
+// structured/graded block generator). Blocks are appended to one FemMesh;
 // coincident nodes are shared, so a model is assembled from adjacent blocks.
 #include <array>
 #include <string>

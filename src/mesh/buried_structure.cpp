@@ -494,7 +494,7 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
   // Stiffness-form hourglass control: under the charge the soil flows plastically for tens of
   // milliseconds, and the viscous form (resisting hourglass velocities only) let the elements next
   // to the axis drift into a sawtooth that grew until nodes crossed the axis (coarse 29 ms, default
-  // 65 ms; issue 8). The stiffness form holds it (docs/buried-structure.md, "Hourglass control").
+  // 65 ms). The stiffness form holds it (docs/buried-structure.md, "Hourglass control").
   // The soil's control is the run's; the box's parts carry their own when it differs
   // (part_hourglass below).
   fmt::format_to(out, "[run.hourglass]  # {}\nform = \"{}\"\ncoefficient = {}\n\n",

@@ -1,6 +1,6 @@
 #pragma once
 #include <algorithm>
-// Buried-structure case generator (issue 8): from a handful of physical
+// Buried-structure case generator: from a handful of physical
 // parameters (charge, depth of burst, standoff, box, soil, domain, mesh sizes)
 // it writes a complete 2-D axisymmetric case file of the paper's example
 // (Wang, Lu, Hao, Chong 2005, §5.1 and Fig. 6): axis through the charge,

@@ -1,5 +1,5 @@
-// The 3-D variant of the buried-structure generator (issue 8: "a box beside a
-// charge, with a symmetry plane"): x from the charge towards the box, y along
+// The 3-D variant of the buried-structure generator (a box beside a
+// charge, with a symmetry plane): x from the charge towards the box, y along
 // the box's front wall, z up, the ground surface z = 0 free. The charge sits
 // on the z axis; the plane y = 0 through the charge centre and the box's
 // mid-width is a symmetry plane, so half the model (y >= 0) is meshed. As in

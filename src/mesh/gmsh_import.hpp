@@ -1,6 +1,6 @@
 #pragma once
 // Reads a part of a FEM mesh from a Gmsh .msh file through the Gmsh library
-// (issue 2, "parts ... from a Gmsh .msh file"). The elements of one named
+// for the parts of a case file. The elements of one named
 // physical group become a part: 4-node quadrilaterals in 2-D, 8-node
 // hexahedra in 3-D (any other element type in the group is refused). Physical
 // groups one dimension lower (lines in 2-D, surfaces in 3-D) become node sets

@@ -1,5 +1,5 @@
 #pragma once
-// Filling a region with SPH particles (issue 3, "Particle parts").
+// Filling a region with SPH particles (particle parts of a case file).
 //
 // Every particle is the centre of a cell of a space-filling tiling, and its
 // volume is that cell's volume, so the particle volumes of a box add up to the

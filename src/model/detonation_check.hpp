@@ -1,5 +1,5 @@
 #pragma once
-// Issue 4, "bad input": a detonation point must lie in an explosive part,
+// Bad input: a detonation point must lie in an explosive part,
 // otherwise the charge would silently never burn. The case reader (and
 // `camouflet check`) calls this once the mesh, particles and materials are
 // known; it throws InputError at the detonation point's location in the case.

@@ -198,8 +198,8 @@ struct Model {
   std::vector<GaugeGroup> gauges;
   std::vector<DetonationPoint> detonations;
   std::vector<SourceLocation> detonation_where;  // same order as detonations
-  std::vector<BarSet> bars;                      // embedded reinforcement bars (issue 6)
-  // Erosion of each material, by index into `materials` (issue 6); a
+  std::vector<BarSet> bars;                      // embedded reinforcement bars
+  // Erosion of each material, by index into `materials`; a
   // material beyond the end of this list does not erode.
   std::vector<ErosionCriteria> erosion;
   ErosionCriteria erosion_of(std::size_t material) const {

@@ -1,5 +1,5 @@
 #pragma once
-// Reinforced-concrete additions to the model (issue 6): embedded bar
+// Reinforced-concrete additions to the model: embedded bar
 // elements and per-material element erosion. Plain data, filled by the case
 // reader (case/read_reinforcement.cpp) or by tests, used by
 // the solver. docs/theory/reinforcement.md.

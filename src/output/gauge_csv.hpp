@@ -1,7 +1,7 @@
 #pragma once
 // One CSV per gauge group: `time_s`, then one column per gauge and quantity
 // named `<gauge>.<quantity>`. Flushed after every row, so a killed run keeps
-// every complete row written so far (issue 9, "Output never lost").
+// every complete row written so far (output is never lost).
 #include <filesystem>
 #include <string>
 #include <vector>

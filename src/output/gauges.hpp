@@ -1,5 +1,5 @@
 #pragma once
-// Lagrangian gauges (issue 2, "Output"; style.md #12): each gauge is found at
+// Lagrangian gauges (style.md #12): each gauge is found at
 // t = 0 in an element of the initial mesh (natural coordinates by Newton
 // inversion) and then follows that material point: kinematic quantities are
 // interpolated from the element's nodes with the shape functions, stress-like

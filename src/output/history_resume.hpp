@@ -1,6 +1,6 @@
 #pragma once
 // Restarts of the history CSVs that live outside the checkpoint (rebar strains,
-// energy history; issue 9): the file the interrupted run left is cut back to
+// energy history): the file the interrupted run left is cut back to
 // the rows written before the restart time, so that the continued run, which
 // re-evaluates its output schedule from the last kept row, writes exactly the
 // rows of an uninterrupted run (rows are written with 17 digits, so the times

@@ -1,5 +1,5 @@
 #pragma once
-// The progress line of a run (issue 2, "Command line"): on a terminal one line
+// The progress line of a run (command line): on a terminal one line
 // rewritten in place with '\r'; otherwise a plain log line every
 // OutputControl::log_interval_s wall seconds (so CI logs and `nohup` files stay
 // readable); nothing with --quiet. The solver calls update() after each cycle

@@ -42,7 +42,7 @@ class RunOutput {
   };
   const std::vector<GaugeSeries>& gauges() const;
 
-  // Checkpoints (issue 9): the gauge rows so far and the
+  // Checkpoints: the gauge rows so far and the
   // output schedule. A RunOutput built with options.restart set writes nothing
   // until it has been loaded this way; loading then rewrites each gauge CSV
   // from the restored rows (dropping rows written after the checkpoint) and

@@ -1,5 +1,5 @@
 #pragma once
-// Rebar strain histories (issue 6): `bars.csv` in the output folder, one row
+// Rebar strain histories: `bars.csv` in the output folder, one row
 // per gauge interval (every cycle when 0) with `time_s` and, for every
 // segment `<bar>.<k>` (k from 1 at the bar's `from` end), its axial (log)
 // strain, axial stress (Pa), axial force (N; per metre of depth in plane

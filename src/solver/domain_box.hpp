@@ -1,5 +1,5 @@
 #pragma once
-// The domain box test of the node and particle checks (issue 9), inline for
+// The domain box test of the node and particle checks, inline for
 // the node loops that apply it to every node each cycle (solver.cpp,
 // solver_checks.cpp).
 #include "model/model.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Stopping a run on SIGINT/SIGTERM (issue 9): the signal handler only sets a
+// Stopping a run on SIGINT/SIGTERM: the signal handler only sets a
 // flag (async-signal-safe); run_model() sees it after the current cycle,
 // writes a checkpoint, completes its output and throws RunInterrupted, which
 // the command line turns into exit code 130 (docs/exit-codes.md).

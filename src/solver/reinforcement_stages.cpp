@@ -1,4 +1,4 @@
-// The reinforced-concrete stages of the cycle (issue 6): embedded bars and
+// The reinforced-concrete stages of the cycle: embedded bars and
 // element erosion. Kept apart from solver.cpp so each stage reads on its own;
 // docs/theory/reinforcement.md.
 #include <cmath>

@@ -29,9 +29,9 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   };
   Solver<D> solver(model);
   RunOutput output(model, options, solver.snapshot());
-  BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories (issue 6)
+  BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories
   EnergyCsv<D> energy_csv(model, options, solver);   // energy history and its split
-  // Checkpoints and restarts (issue 9): the solver's state, then the output's.
+  // Checkpoints and restarts: the solver's state, then the output's.
   RunCheckpoints checkpoints(model, options, [&solver, &output](StateVisitor& v) {
     solver.visit_state(v);
     output.visit_state(v);

@@ -15,7 +15,7 @@ struct RunOptions {
   std::filesystem::path output_dir;  // created if missing; empty = write nothing (tests)
   ProgressStyle progress = ProgressStyle::automatic;
   int threads = 0;  // 0 = OpenMP default
-  // Checkpoints (issue 9, docs/reliability.md). `restart`: a checkpoint file,
+  // Checkpoints (docs/reliability.md). `restart`: a checkpoint file,
   // or "latest" for the newest usable one in <output_dir>/checkpoints.
   std::string restart;
   // "key = value" lines of every case setting a restart must not change
@@ -31,7 +31,7 @@ struct EnergyBalance {
   double hourglass = 0.0;
   double viscous = 0.0;         // dissipated by artificial viscosity (contained in internal)
   double boundary_work = 0.0;   // work done on the model by boundary forces and loads
-  double eroded = 0.0;          // internal energy held by elements when they were eroded (issue 6)
+  double eroded = 0.0;          // internal energy held by elements when they were eroded
   double initial_total = 0.0;   // kinetic + internal at t = 0
   // |E_kin + E_int + E_hg + E_eroded - E_0 - W_boundary| / max(E_0 + |W_boundary|, E_kin + E_int + E_hg + E_eroded)
   double relative_error = 0.0;

@@ -1,5 +1,5 @@
 #pragma once
-// The checkpoint side of run_model() (issue 9, docs/reliability.md): when to
+// The checkpoint side of run_model() (docs/reliability.md): when to
 // write, where, and finding and checking the checkpoint a restart starts from.
 #include <chrono>
 #include <cstdint>

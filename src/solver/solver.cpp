@@ -388,8 +388,8 @@ void Solver<D>::element_kinematics() {
         EntityKind::element, r.bad_element + 1, "volume",
         fmt::format("volume {:.6g} m^3 is not positive (element inverted or collapsed)", r.bad_volume)));
   if (r.tangled_element >= 0) {
-    // Not fatal: the buried-structure cases tangle an element now and then (issue 8,
-    // docs/reliability.md); a run must not carry one silently. Each newly tangled element is
+    // Not fatal: the buried-structure cases tangle an element now and then
+    // (docs/reliability.md); a run must not carry one silently. Each newly tangled element is
     // reported, at most 20 lines.
     const std::int64_t id = r.tangled_element + 1;
     if (first_tangled_cycle_ < 0) first_tangled_element_ = id, first_tangled_cycle_ = cycle_;

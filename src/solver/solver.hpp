@@ -74,7 +74,7 @@ class Solver {
   };
   const EnergySplit& energy_split() const { return split_; }
   FieldSnapshot snapshot() const;
-  // Every array and scalar of the run's state, for checkpoints (solver_state.cpp, issue 9).
+  // Every array and scalar of the run's state, for checkpoints (solver_state.cpp).
   void visit_state(StateVisitor& visitor);
 
   // --- state, for tests and output ---
@@ -106,14 +106,14 @@ class Solver {
   void gather_element_state();
   void choose_time_step();
   void start_energy_and_step();  // the first step's vote and the initial energy (constructor, set_initial_velocity)
-  // Reinforced-concrete stages (solver/reinforcement_stages.cpp, issue 6).
+  // Reinforced-concrete stages (solver/reinforcement_stages.cpp).
   void setup_reinforcement();
   void add_bar_forces();
   void update_bars();
   void erode_elements();
 
   [[noreturn]] void fail(NumericalError error) const;
-  // Diagnostics of issue 9 (solver_checks.cpp): a node or particle outside the
+  // Numerical-failure diagnostics (solver_checks.cpp): a node or particle outside the
   // domain box or with a non-finite position or velocity stops the run; an
   // entity is described by material and position in every failure message.
   void check_nodes_and_particles() const;
@@ -176,7 +176,7 @@ class Solver {
   double hourglass_stored_ = 0.0;      // J, stiffness-form hourglass energy at t_n
   double hourglass_dissipated_ = 0.0;  // J, work absorbed by the viscous form
 
-  // Reinforcement and erosion (issue 6).
+  // Reinforcement and erosion.
   EmbeddedBars<D> bars_;
   bool erosion_ = false;                 // some material erodes
   std::vector<SymTensor> total_strain_;  // per element, sum D dt (geometric-strain erosion)

@@ -1,4 +1,4 @@
-// Numerical-failure diagnostics of the cycle (issue 9): nodes and particles
+// Numerical-failure diagnostics of the cycle: nodes and particles
 // must stay finite and inside the case's domain box ([run] domain_min /
 // domain_max), and every failure names the entity's material and position.
 #include <fmt/format.h>
@@ -56,7 +56,7 @@ std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
 template <int D>
 void Solver<D>::check_axis_crossings() {
   // r-z: a node that has moved to r < 0 has crossed the axis; the ring volumes around it stop
-  // meaning anything (issue 8: join-face nodes next to the axis were driven across it, and the run
+  // meaning anything (join-face nodes next to the axis were once driven across it, and the run
   // went on for 20 ms with inverted elements, unreported, since the element centres stayed at
   // r > 0). Reported like a tangled element (a warning naming the node, cycle and time, at most 20
   // lines), not fatal: the rest of the model is still meaningful, and the buried-structure cases

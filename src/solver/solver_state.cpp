@@ -1,5 +1,5 @@
 // Solver<D>::visit_state: the complete state of the explicit cycle by name
-// (core/state_visitor.hpp) for checkpoints and restarts (issue 9). Anything
+// (core/state_visitor.hpp) for checkpoints and restarts. Anything
 // a later cycle reads must be listed here; restart-determinism tests
 // (tests/solver/test_restart.cpp) compare a restarted run bit for bit with an
 // uninterrupted one and fail when something is missing.

@@ -1,4 +1,4 @@
-// The SPH state for checkpoints (issue 9): every particle and ghost array,
+// The SPH state for checkpoints: every particle and ghost array,
 // the material batches, and the neighbour lists with their build state, so
 // that a restarted run sums the same neighbours in the same order and stays
 // bit-identical to the uninterrupted one.

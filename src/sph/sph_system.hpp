@@ -183,7 +183,7 @@ class SphSystem {
   // Particles whose planar density is below that limit after the last update_state().
   std::size_t volume_limited_count() const { return volume_limited_; }
   const Kernel<D>& kernel() const { return kernel_; }
-  // Every array and scalar a restart needs (checkpoints, issue 9; sph_state.cpp).
+  // Every array and scalar a restart needs (checkpoints; sph_state.cpp).
   void visit_state(StateVisitor& visitor);
 
  private:

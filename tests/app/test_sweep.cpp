@@ -1,4 +1,4 @@
-// `camouflet sweep` (issue 8, docs/buried-structure.md "Parameter studies"):
+// `camouflet sweep` (docs/buried-structure.md "Parameter studies"):
 // the sweep file's expansion and its bad input, and a study of four tiny
 // cases run through the executable: the CSV has one row per case with the
 // varied keys, the status and the results; a case the generator refuses and

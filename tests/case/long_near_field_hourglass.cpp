@@ -1,4 +1,4 @@
-// The soil's hourglass form (issue 8, long label): the cut-down r-z near field
+// The soil's hourglass form (long label): the cut-down r-z near field
 // of the buried-structure case (the set-up of test_join_near_field.cpp: 100 kg
 // TNT 0.5 m deep, 0.05 m cells, SPH zone r <= 1.5 m down to 2 m joined to the
 // FEM soil, transmitting far edges) run to 30 ms under each hourglass form.

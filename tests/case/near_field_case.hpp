@@ -1,5 +1,5 @@
 #pragma once
-// The buried-structure case cut down to its near field (issue 8), shared by
+// The buried-structure case cut down to its near field, shared by
 // test_join_near_field.cpp and long_near_field_hourglass.cpp: 100 kg TNT 0.5 m
 // deep on the axis of an r-z soil block 2.5 m x 3.5 m (0.05 m cells, the
 // `default` resolution), the soil in r <= 1.5 m down to 2 m as SPH particles

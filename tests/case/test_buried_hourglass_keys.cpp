@@ -1,4 +1,4 @@
-// Hourglass keys of the buried-structure generator (issue 8): `soil.hourglass`
+// Hourglass keys of the buried-structure generator: `soil.hourglass`
 // and `structure.hourglass` ({ form, coefficient }). Their defaults write the
 // case as before (stiffness, 0.1 for all: the committed cases stay valid); a
 // box form other than the soil's goes on every concrete part; bad values are

@@ -1,5 +1,5 @@
-// SPH parts filled from a Gmsh physical surface/volume (issue 3, "Particle
-// parts"): tiny checked-in meshes (tests/case/meshes) whose areas and volumes
+// SPH parts filled from a Gmsh physical surface/volume (particle
+// parts): tiny checked-in meshes (tests/case/meshes) whose areas and volumes
 // are known in closed form. The particle volumes (cells whose centres lie in
 // the region) must add up to the region's measure within the boundary-cell
 // error, in plane, r-z (Pappus) and 3-D, through the library and a case file.

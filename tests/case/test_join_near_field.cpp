@@ -1,11 +1,11 @@
-// The joined SPH zone of the buried-structure case, cut down to its near field
-// (issue 8): 100 kg TNT 0.5 m deep on the axis of an r-z soil block 2.5 m x
+// The joined SPH zone of the buried-structure case, cut down to its near field:
+// 100 kg TNT 0.5 m deep on the axis of an r-z soil block 2.5 m x
 // 3.5 m (0.05 m cells, the `default` resolution), the soil in r <= 1.5 m down
 // to 2 m as SPH particles joined to the FEM soil, transmitting far edges, 8 ms.
 //
 // In the continuum the soil on both sides of the join moves as one, so the
-// join-face nodes must follow the particles beside them. Before the fixes of
-// session 5 they did not, in two places:
+// join-face nodes must follow the particles beside them. Before the join-face
+// fixes named below they did not, in two places:
 // * next to the axis, the face nodes at r = 0.05 and 0.1 m were driven down
 //   through the elements below them and across the axis (the run stopped at
 //   6 ms: "crossed the axis"): the faces took the particles' stress with the

@@ -1,5 +1,5 @@
-// Joined SPH zones and sliding contacts declared in a case file (issue 7,
-// "Zone set-up from the case file"): the reader cuts the hole, fills the zone
+// Joined SPH zones and sliding contacts declared in a case file
+// (zone set-up from the case file): the reader cuts the hole, fills the zone
 // around a nested SPH part and records the join; the example case runs
 // through the executable and conserves momentum and energy.
 #include <gtest/gtest.h>
@@ -155,7 +155,7 @@ TEST(JoinedCase, ExampleRunsThroughTheExecutable) {
 
 // A sin^2 velocity pulse (1 m/s, 0.26 ms) driven into a laterally confined bar
 // crosses a joined zone [0.4, 0.8] m; the energy balance (boundary and join
-// work booked) closes within 1 % (issue 7, "what it must show" 2).
+// work booked) closes within 1 %.
 TEST(JoinedCase, PulseThroughAJoinedZoneConservesEnergy) {
   const fs::path dir = test::fresh_test_output("joined_pulse");
   fs::create_directories(dir);

@@ -1,4 +1,4 @@
-// Kill safety (issue 9, "What it must show" 2 and 3), through the real
+// Kill safety, through the real
 // executable: SIGKILL at random moments always leaves a readable latest
 // checkpoint and gauge CSVs made of complete lines, and `run --restart
 // latest` finishes the run; SIGTERM writes a checkpoint and exits with 130

@@ -1,4 +1,4 @@
-// Robustness of the case reader (issue 9, "hardened input"), a bounded and
+// Robustness of the case reader (hardened input), a bounded and
 // deterministic stand-in for fuzzing: thousands of random edits of a valid
 // case (bytes replaced, deleted, duplicated; numbers made extreme) must each
 // either read or fail with an InputError carrying a location — never another

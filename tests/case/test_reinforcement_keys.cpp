@@ -1,4 +1,4 @@
-// Case keys of reinforced concrete (issue 6): `rebar_layers` on a block
+// Case keys of reinforced concrete: `rebar_layers` on a block
 // part, [[bars]], a material's `erosion`; bad values name their key.
 #include <gtest/gtest.h>
 

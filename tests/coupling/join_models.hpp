@@ -1,6 +1,6 @@
 #pragma once
-// A plane P-pulse crossing a joined SPH zone in one elastic material (issue 7,
-// "What it must show" 1-3): FEM [0, 0.4] L | SPH [0.4, 0.8] L | FEM [0.8, 1.2] L
+// A plane P-pulse crossing a joined SPH zone in one elastic material:
+// FEM [0, 0.4] L | SPH [0.4, 0.8] L | FEM [0.8, 1.2] L
 // along the column, laterally confined (symmetry planes, or the axis and a
 // roller in r-z), driven by a sin^2 velocity pulse at the near end and
 // absorbed by a transmitting boundary at the far end.

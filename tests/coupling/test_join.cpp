@@ -1,4 +1,4 @@
-// Joined SPH-FEM interface (issue 7, "What it must show" 1-3 and 6): a plane
+// Joined SPH-FEM interface: a plane
 // elastic P-pulse crosses FEM -> SPH -> FEM in one material. The join is not a
 // material interface: reflections below 5 % of the incident amplitude,
 // transmission within 5 %, total energy within 1 % over the crossing, also with
@@ -25,9 +25,9 @@ Parameters with_switch() {
 
 struct Limits {
   double reflection = 0.05;
-  double energy = 0.01;      // issue 7 item 2
-  bool transmission = true;  // issue 7 item 1: within 5 % both ways
-  std::string energy_reference = "0 (issue 7: within 1 %)";
+  double energy = 0.01;      // energy change within 1 %
+  bool transmission = true;  // transmission within 5 % both ways
+  std::string energy_reference = "0 (within 1 %)";
 };
 
 void check_crossing(const std::string& label, const test::JoinCrossing& r, const Limits& limits) {
@@ -69,7 +69,7 @@ TEST(SphFemJoin, PlanePulsePlaneStrain) {
 TEST(SphFemJoin, PlanePulseAxisymmetric) {
   // The column lies along the axis, between the axis and a roller at r = 4 cells: the images of
   // the coupling points across the roller carry their element's ring weight (sph_fem_join.cpp).
-  // Energy bound 1.5 %, not issue 7's 1 %: since issue 8 the faces take the pair reactions with the
+  // Energy bound 1.5 %, not the usual 1 %: the faces take the pair reactions with the
   // coupling point's own ring radius, R = -2 pi r_j A_i A_j (sigma_i + sigma_j) . grad W, which next
   // to the axis (and to a roller) is not minus the particles' pair force, so the join gives up
   // momentum and energy there (measured -1.07 % over the two crossings, -0.67 % with R = -F). The
@@ -77,7 +77,7 @@ TEST(SphFemJoin, PlanePulseAxisymmetric) {
   // through the elements below them in the buried-structure case (docs/theory/coupling.md).
   Limits limits;
   limits.energy = 0.015;
-  limits.energy_reference = "0 (issue 7: 1 %; 1.5 % for this column within 4 cells of the axis, issue 8)";
+  limits.energy_reference = "0 (1 % elsewhere; 1.5 % for this column within 4 cells of the axis)";
   check_crossing("Joined SPH zone, P-pulse, axisymmetric",
                  test::join_crossing<2>(GeometryMode::axisymmetric, 5e-3, 5e-3, with_switch()), limits);
 }
@@ -98,7 +98,7 @@ TEST(SphFemJoin, PlanePulse3D) {
 }
 
 TEST(SphFemJoin, GradedParticlesSpacingRatio2) {
-  // Issue 7 item 3 asks for a reflection below 10 %. Each element beside the particles enters as
+  // With graded particles the reflection must stay below 10 %. Each element beside the particles enters as
   // 2 x 2 sub-points (sph_fem_join.cpp), so the particles see their own lattice continued: the
   // equal-spacing limits hold (reflection 5 %, transmission 5 %, energy 1 %).
   check_crossing("Joined SPH zone, particles at half the element size (ratio 2), plane strain",
@@ -111,7 +111,7 @@ TEST(SphFemJoin, GradedParticlesSpacingRatio1p5) {
   // the record keeps the measured value against a 5 % bound so that a regression shows.
   Limits limits;
   limits.energy = 0.05;
-  limits.energy_reference = "0 (issue 7 item 2 is for equal spacing; open at ratio 1.5, bound 5 %)";
+  limits.energy_reference = "0 (the 1 % bound is for equal spacing; open at ratio 1.5, bound 5 %)";
   check_crossing("Joined SPH zone, particles at 2/3 of the element size (ratio 1.5), plane strain",
                  test::join_crossing<2>(GeometryMode::plane_strain, 5e-3, 5e-3 / 1.5, with_switch()), limits);
 }

@@ -1,4 +1,4 @@
-// The joined SPH-FEM interface next to the axis of an r-z model (issue 8: in the
+// The joined SPH-FEM interface next to the axis of an r-z model (in the
 // buried-structure cases the join-face nodes nearest the axis ran away, pulled
 // towards the axis until their elements tangled). A plane elastic P-pulse
 // crosses FEM -> SPH -> FEM along the axis in a column 12 cells wide (axis at

@@ -1,4 +1,4 @@
-// Sliding interface (issue 7, "What it must show" 5): a disc (2-D) / cylinder
+// Sliding interface: a disc (2-D) / cylinder
 // (3-D) of SPH particles strikes a free FEM plate through the penalty contact.
 // Total momentum of particles and nodes is conserved within 0.5 % and no
 // particle centre crosses the plate surface (the documented tolerance: an

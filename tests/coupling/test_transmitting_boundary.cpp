@@ -1,4 +1,4 @@
-// Transmitting boundaries (issue 7, "What it must show" 4): Lysmer-Kuhlemeyer
+// Transmitting boundaries: Lysmer-Kuhlemeyer
 // dashpots absorb a P-wave at normal incidence (reflection < 5 % of the
 // incident amplitude), at 45 degrees (< 15 %), and a spherical wave in an
 // axisymmetric quarter domain leaves < 5 % of its energy behind; the energy

@@ -1,6 +1,6 @@
 #pragma once
 // Free vibration of a simply supported elastic strip in plane strain, meshed
-// with one-point quads as the buried box's walls are (issue 8: 100 mm walls,
+// with one-point quads as the buried box's walls are (100 mm walls,
 // 2 cells through the thickness in `coarse`, 4 in `default`). Its first
 // bending mode exercises exactly what the hourglass control of those walls
 // decides: the bending of an element layer is the hourglass mode of its

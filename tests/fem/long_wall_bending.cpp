@@ -1,5 +1,5 @@
 // The wall-bending study behind docs/buried-structure.md, "Hourglass form in
-// the structure" (issue 8, long label): the simply supported strip of
+// the structure" (long label): the simply supported strip of
 // test_wall_bending.cpp (L/t = 10) with 1, 2, 4 and 8 one-point quads through
 // its thickness, under the viscous form and the stiffness form at
 // coefficients 0.05 to 0.5; prints the period over the Timoshenko beam's.

@@ -1,4 +1,4 @@
-// Energy of a whole detonating charge (issue 4, item 3): the seed paper's
+// Energy of a whole detonating charge: the seed paper's
 // 100 kg TNT sphere (Wang et al. 2005, Table 5; 3.68e8 J of chemical energy)
 // lit at its centre, in axisymmetric quad4 FEM, expanding into vacuum. The
 // chemical energy is internal energy from the start (e0 / rho0 per kg,
@@ -82,10 +82,10 @@ TEST(ChargeEnergy, HundredKilogramTntSphereReleasesE0TimesVolume) {
   // The faceted sphere holds the chemical energy of the real one (its
   // chords lose a few 1e-4 of the volume).
   test::verify({"100 kg TNT sphere (FEM r-z): chemical energy of the meshed charge",
-                "E0 x V = 6.0e9 J/m^3 x 100 kg / 1630 kg/m^3 = 3.68e8 J (issue 4)", e0 * mass / rho0,
+                "E0 x V = 6.0e9 J/m^3 x 100 kg / 1630 kg/m^3 = 3.68e8 J", e0 * mass / rho0,
                 chemical, 0.005, true, "J"});
   EXPECT_EQ(least_burnt, 1.0) << "the whole charge must have burnt";
   test::verify({"100 kg TNT sphere (FEM r-z): total energy vs chemical energy released, worst over the run",
-                "E_kin + E_int + E_hg = E0 x V within 1 % (issue 4)", 0.0, worst, 0.01, false, "relative"});
+                "E_kin + E_int + E_hg = E0 x V within 1 %", 0.0, worst, 0.01, false, "relative"});
   EXPECT_GT(kinetic, 0.2 * chemical) << "the detonation must have turned chemical energy into motion";
 }

@@ -1,4 +1,4 @@
-// Issue 4, "bad input": a detonation point outside every explosive part is an
+// Bad input: a detonation point outside every explosive part is an
 // InputError naming the point's key (model/detonation_check.hpp).
 #include <gtest/gtest.h>
 

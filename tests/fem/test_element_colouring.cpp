@@ -1,4 +1,4 @@
-// Element colouring for the force assembly (issue 10; fem/element_colouring.hpp):
+// Element colouring for the force assembly (fem/element_colouring.hpp):
 // the colouring itself (every element once, no two elements, or blocks of
 // elements, of a colour sharing a node), and the assemblies of
 // FemElements::add_internal_forces against each other: per-thread buffers and

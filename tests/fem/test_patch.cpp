@@ -1,4 +1,4 @@
-// Patch tests of the one-point elements (issue 2, "What it must show" 1):
+// Patch tests of the one-point elements:
 // a uniform velocity gradient imposed on every node of a distorted mesh gives
 // the same stress in every element, in plane strain, axisymmetric and 3-D.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The steel-layer generator (issue 6; Wang et al. 2005, section 5.1): the
+// The steel-layer generator (Wang et al. 2005, section 5.1): the
 // layers share nodes with the concrete, the steel volume equals the rebar
 // volume (area per unit width x span x depth), and bad input names its key.
 #include <gtest/gtest.h>

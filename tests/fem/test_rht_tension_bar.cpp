@@ -1,5 +1,5 @@
-// A plain-concrete bar pulled apart, for two element sizes (issue 6, "What it
-// must show" 4): RHT has no regularisation, so the softening localises in one
+// A plain-concrete bar pulled apart, for two element sizes:
+// RHT has no regularisation, so the softening localises in one
 // element row and the elongation it takes to break the bar, and the energy,
 // scale with the element size. docs/theory/rht-concrete.md, section 4.
 #include <fmt/format.h>

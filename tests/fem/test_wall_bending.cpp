@@ -1,4 +1,4 @@
-// Bending of a wall with one-point quads (issue 8): a simply supported elastic
+// Bending of a wall with one-point quads: a simply supported elastic
 // strip, L/t = 10 (a 1 m span of the box's 100 mm wall), 2 and 4 cells through
 // its thickness (the `coarse` and `default` cases), vibrating in its first
 // bending mode; its period against the Timoshenko beam's under each hourglass

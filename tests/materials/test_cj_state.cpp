@@ -1,5 +1,5 @@
-// Chapman-Jouguet state of the seed paper's TNT (issue 4, item 1) and the
-// refusal of a JWL set without one (item 6).
+// Chapman-Jouguet state of the seed paper's TNT and the
+// refusal of a JWL set without one.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Johnson-Cook steel at a material point (issue 4, item 4): uniaxial stress
+// Johnson-Cook steel at a material point: uniaxial stress
 // at constant strain rate through the material-point driver, against the
 // closed-form yield curve (isothermal) and the closed-form adiabatic
 // softening (an accurate integration of dT/deps_p = chi Y / (rho C_v)).

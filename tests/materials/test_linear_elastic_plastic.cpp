@@ -1,5 +1,5 @@
 // Linear EOS, elastic and von Mises strength at one material point along a
-// uniaxial-strain compression path, against closed forms (issue 2).
+// uniaxial-strain compression path, against closed forms.
 #include <gtest/gtest.h>
 #include <omp.h>
 

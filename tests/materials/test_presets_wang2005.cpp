@@ -44,7 +44,7 @@ TEST(PresetsWang2005, BuildWithTheirTables) {
   EXPECT_EQ(tnt->eos().type(), "jwl");
   EXPECT_DOUBLE_EQ(tnt->reference_density(), 1630.0);
   // Chemical energy of the paper's 100 kg charge: 100 kg * 6.0e9 J/m^3 / 1630 kg/m^3.
-  test::verify({"tnt_wang2005: chemical energy of 100 kg", "issue 4: 3.68e8 J", 3.68e8,
+  test::verify({"tnt_wang2005: chemical energy of 100 kg", "E0 x 100 kg / rho0 = 3.68e8 J", 3.68e8,
                 100.0 * tnt->eos().reference_specific_energy(), 0.001, true, "J"});
   auto steel = preset("steel_1006_wang2005");
   ASSERT_NE(steel->strength(), nullptr);

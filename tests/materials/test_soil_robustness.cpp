@@ -1,5 +1,5 @@
 // Three-phase soil under random strain increments, and refusal of bad
-// parameters with an InputError naming the key. Issue 5, check 7.
+// parameters with an InputError naming the key.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Soil Drucker-Prager strength with strain-rate factor (eqs. 20-23) and bond
-// damage (eqs. 17-19) driven through Material::update. Issue 5, checks 3 and 4.
+// damage (eqs. 17-19) driven through Material::update.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

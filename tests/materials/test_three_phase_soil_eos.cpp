@@ -1,6 +1,6 @@
 // Three-phase soil EOS (Wang et al. 2005, eqs. 11-17): hydrostatic loading,
 // hand-derived initial stiffness, high-pressure limit, Tait water limit,
-// unloading rule and sound speed. Issue 5, checks 1 and 2.
+// unloading rule and sound speed.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Particle gauges by kernel interpolation at a fixed point (issue 3, "Output"):
+// Particle gauges by kernel interpolation at a fixed point:
 // on a particle lattice carrying analytic fields, the Shepard-normalised
 // interpolation must return a constant field to round-off and a linear field
 // to the lattice's small first-moment error; in r-z the weights must be the

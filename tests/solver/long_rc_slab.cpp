@@ -1,5 +1,5 @@
 // A simply supported one-way RC slab strip (plane strain) under a short
-// uniform pressure pulse (issue 6, "What it must show" 7): the peak mid-span
+// uniform pressure pulse: the peak mid-span
 // deflection against Biggs' elastic-plastic single-degree-of-freedom estimate
 // (load-mass factors of the simply supported beam under uniform load,
 // resistance from the section's moment capacity), and the two rebar

@@ -1,4 +1,4 @@
-// Spherical TNT charge fully contained in the sandy clay (issue 5, check 6):
+// Spherical TNT charge fully contained in the sandy clay:
 // peak radial stress against scaled distance Z = R / W^(1/3) compared with
 // the TM 5-855-1 band of the seed paper's Fig. 8b (Functions 1 and 2 with its
 // coupling factor f = 0.6). FEM only: a spherical wedge (1-D spherical flow) in
@@ -165,7 +165,7 @@ const GroundShock& seismic_ground_shock() {
 
 // TM 5-855-1 Functions 1 and 2 (15 Z^-2.5 and 22 Z^-2 MPa) times a coupling
 // factor f, widened by a factor 1.5 either way: f = 0.6 as Wang et al. 2005
-// use it (eqs. 38-39, Fig. 8b), f = 1 as issue 5 states it for a fully
+// use it (eqs. 38-39, Fig. 8b), f = 1 for a fully
 // contained charge.
 constexpr double paper_coupling = 0.6, contained_coupling = 1.0;
 double band_low(double z, double coupling = paper_coupling) {
@@ -303,7 +303,7 @@ TEST(SoilTnt, SeismicPresetPeakStressWithinTm5Band) {
       table(g) + (in_band ? "all inside" : "outside:" + outside), in_band);
 }
 
-// KNOWN FAILURE (theory section 12.4): issue 5's band with coupling factor 1
+// KNOWN FAILURE (theory section 12.4): the TM 5-855-1 band with coupling factor 1
 // for a fully contained charge; the seismic preset lies below it at
 // Z = 0.4-1 (0.70-0.97 of its lower edge). Disabled so the long suite passes; run it with
 // --gtest_also_run_disabled_tests (it then records its outcome).
@@ -315,7 +315,7 @@ TEST(SoilTnt, DISABLED_SeismicPresetPeakStressWithinContainedBand) {
   test::record_check(
       "TNT (1 kg) contained in sandy clay with K_p calibrated to c = 1400 m/s, FEM wedge: peak radial "
       "stress vs Z = 0.3-2.5 m/kg^(1/3)",
-      "TM 5-855-1 band f (15 Z^-2.5 ... 22 Z^-2) MPa, f = 1 (issue 5, fully contained), within a factor 1.5",
+      "TM 5-855-1 band f (15 Z^-2.5 ... 22 Z^-2) MPa, f = 1 (fully contained), within a factor 1.5",
       table(g, contained_coupling) + (in_band ? "all inside" : "outside:" + outside), in_band);
 }
 

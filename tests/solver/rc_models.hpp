@@ -1,5 +1,5 @@
 #pragma once
-// Reinforced-concrete test models (issue 6): the 35 MPa concrete, a weaker
+// Reinforced-concrete test models: the 35 MPa concrete, a weaker
 // crack seed, Steel 1006 through the preset path, and the section force of a
 // column of elements.
 #include <cmath>

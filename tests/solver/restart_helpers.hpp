@@ -1,5 +1,5 @@
 #pragma once
-// Shared pieces of the restart tests (issue 9): a small FEM case, a small
+// Shared pieces of the restart tests: a small FEM case, a small
 // particle model, a run split in two at a checkpoint, and comparing two runs'
 // final checkpoints array by array.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #pragma once
-// A Taylor cylinder impact in axisymmetric quad4 FEM (issue 4, item 5): a
+// A Taylor cylinder impact in axisymmetric quad4 FEM: a
 // rod of radius R and length L at velocity V against a rigid, frictionless
 // wall (symmetry plane z = 0; the rod cannot rebound from it, which changes
 // the final shape by the elastic spring-back only), axis boundary at r = 0.

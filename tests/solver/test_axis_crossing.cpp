@@ -1,5 +1,5 @@
-// r-z: a node that crosses the axis must be reported, naming it, the cycle and the time (issue 8:
-// join-face nodes next to the axis of the buried-structure case ran across it and the run went on
+// r-z: a node that crosses the axis must be reported, naming it, the cycle and the time (the
+// join-face nodes next to the axis of the buried-structure case once ran across it and the run went on
 // for 20 ms with inverted ring elements, unreported, because the element centres stayed at r > 0).
 // A warning, as a tangled element (solver_checks.cpp, docs/reliability.md).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Rebar strain histories (issue 6): a run with [[bars]] writes bars.csv with
+// Rebar strain histories: a run with [[bars]] writes bars.csv with
 // one column group per segment; a bar stretched by its host records the host's
 // strain: the segments' stretches add up to the imposed elongation.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Numerical-failure diagnostics (issue 9, "What it must show" 4): each failure
+// Numerical-failure diagnostics: each failure
 // is provoked by a small model and the message must name the right entity id,
 // its material and position, the cycle, the time and the failed quantity; the
 // run writes a final snapshot, summary and failure checkpoint.

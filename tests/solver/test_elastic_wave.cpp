@@ -1,5 +1,5 @@
-// Uniaxial-strain elastic P-wave in a long column (issue 2, "What it must
-// show" 2): a velocity step v0 on one end; the front reaches a station at
+// Uniaxial-strain elastic P-wave in a long column:
+// a velocity step v0 on one end; the front reaches a station at
 // x = L_s after L_s / c_p, and behind it sigma_xx = -rho c_p v0.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Embedded bars under a prescribed homogeneous stretch of their host (issue
-// 6): every host node moves with v = L x (L the velocity gradient), so the
+// Embedded bars under a prescribed homogeneous stretch of their host:
+// every host node moves with v = L x (L the velocity gradient), so the
 // bar's strain is known exactly and an elastic steel bar in uniaxial stress
 // must carry sigma = E eps (Young's modulus, not the constrained modulus),
 // along a diagonal in 3-D, along x in plane strain, and as a ring (hoop

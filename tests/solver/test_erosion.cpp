@@ -1,4 +1,4 @@
-// Element erosion (issue 6): a plane-strain bar pulled until its weakest
+// Element erosion: a plane-strain bar pulled until its weakest
 // element necks past the geometric-strain threshold. That element is eroded
 // (stress zeroed, mass kept on its nodes), the two halves spring back, and
 // the energy balance, with the eroded element's internal energy moved to

@@ -1,5 +1,5 @@
-// The same 1-D elastic-plastic impact through FEM and through SPH (issue 3,
-// must-show 6): a von Mises bar (uniaxial strain: symmetry at y = 0 and y = H)
+// The same 1-D elastic-plastic impact through FEM and through SPH:
+// a von Mises bar (uniaxial strain: symmetry at y = 0 and y = H)
 // moving at -v0 stops against a rigid wall at x = 0. The velocity step splits
 // into an elastic precursor at the Hugoniot elastic limit and a slower plastic
 // wave (Meyers, Dynamic Behavior of Materials, 1994, s. 7.2); in Lagrangian

@@ -1,4 +1,4 @@
-// Hourglass control (issue 2, "What it must show" 6): a coarse block striking
+// Hourglass control: a coarse block striking
 // a sticking wall excites the zero-energy modes of one-point quads and hexes. With
 // Flanagan-Belytschko control the hourglass energy stays under 5 % of the
 // internal energy and the hourglass share of the displacement field stays
@@ -88,7 +88,7 @@ void check(const std::string& label) {
   const HourglassOutcome stiff = impact<D>(HourglassForm::stiffness);
   const HourglassOutcome viscous = impact<D>(HourglassForm::viscous);
   const HourglassOutcome off = impact<D>(HourglassForm::none);
-  test::verify({label + ": hourglass / internal energy, stiffness control (0.1)", "under 5 % (issue 2)", 0.0,
+  test::verify({label + ": hourglass / internal energy, stiffness control (0.1)", "under 5 %", 0.0,
                 stiff.energy_ratio, 0.05, false, "-"});
   // The viscous form dissipates what it removes: a looser bound, recorded.
   test::record_check(label + ": hourglass / internal energy, viscous control (0.1)", "under 25 %",

@@ -1,4 +1,4 @@
-// Per-part hourglass control (issue 8): two disconnected blocks, one part with
+// Per-part hourglass control: two disconnected blocks, one part with
 // the viscous form and one with the stiffness form, move bit for bit as each
 // block alone under the run-wide form of its part; the hourglass energy of
 // the pair is the sum of the two; a run split at a checkpoint ends bit-identical.

@@ -1,4 +1,4 @@
-// Axisymmetric correctness (issue 2, "What it must show" 3): a thick-walled
+// Axisymmetric correctness: a thick-walled
 // cylinder in r-z, a < r < b, axial motion suppressed (plane strain along z),
 // under an internal pressure ramped smoothly over several breathing periods,
 // against the Lame solution (Timoshenko & Goodier, Theory of Elasticity, s. 28):

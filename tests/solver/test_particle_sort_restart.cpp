@@ -1,4 +1,4 @@
-// Re-sorted particles and restarts (issue 3, particle re-sort; issue 9): a
+// Re-sorted particles and restarts: a
 // particle impact with re-sorting after every neighbour-list rebuild, stopped
 // half way and restarted from its checkpoint, ends with gauge CSVs (one gauge
 // following a particle, one interpolating at a fixed point) and a final state

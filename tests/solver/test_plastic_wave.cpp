@@ -1,5 +1,5 @@
-// Uniaxial-strain impact on an elastic-perfectly-plastic (von Mises) bar
-// (issue 2, "What it must show" 5). The velocity step splits into an elastic
+// Uniaxial-strain impact on an elastic-perfectly-plastic (von Mises) bar.
+// The velocity step splits into an elastic
 // precursor at the Hugoniot elastic limit and a slower plastic wave:
 //   sigma_HEL = (K + 4G/3) Y / (2G)          (uniaxial strain, yield at sqrt(3 J2) = Y)
 //   c_plastic = sqrt(K / rho)                 (perfect plasticity: the deviator is frozen)

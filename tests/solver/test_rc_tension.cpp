@@ -1,4 +1,4 @@
-// A reinforced-concrete tie pulled apart (issue 6, "What it must show" 6):
+// A reinforced-concrete tie pulled apart:
 // once the concrete has cracked through, the section at the crack carries
 // only the steel, so its force must equal the steel area times the
 // Johnson-Cook flow stress at the steel's plastic strain, plastic strain rate

@@ -1,4 +1,4 @@
-// Restart determinism (issue 9, "What it must show" 1): a run stopped half way
+// Restart determinism: a run stopped half way
 // (max_cycles) and restarted from its checkpoint ends with gauge CSVs and a
 // final state identical bit for bit to the uninterrupted run, same thread
 // count, for a FEM case and a particle (SPH) model. Comparing every array of

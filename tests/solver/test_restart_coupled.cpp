@@ -1,5 +1,5 @@
 // Restart determinism for the state added after the first restart tests
-// (issue 9, "What it must show" 1; docs/reliability.md): a model with steel
+// (docs/reliability.md): a model with steel
 // rebar layers and embedded bars, one whose elements erode after the restart,
 // an SPH zone joined to FEM, and SPH particles sliding on a FEM plate. Each
 // run stopped at half its cycles and restarted from its checkpoint must end

@@ -1,4 +1,4 @@
-// 1-D uniaxial-strain soil column hit by a pressure pulse (issue 5, check 5):
+// 1-D uniaxial-strain soil column hit by a pressure pulse:
 // the shock runs at the Rankine-Hugoniot speed of the model's own loading
 // curve p(rho), and once the (much faster) release from the end of the pulse
 // overtakes it, the peak stress decays with distance.

@@ -1,4 +1,4 @@
-// Failures the solver must name (issue 2, "What it must show" 7 and the
+// Failures the solver must name (the
 // NumericalError contract), the driver's bookkeeping, and thread-count
 // independence of the trajectory.
 #include <gtest/gtest.h>
@@ -74,7 +74,7 @@ TEST(SolverErrors, ElementInvertedDuringTheRunIsNamed) {
     EXPECT_EQ(e.quantity(), "volume");
     EXPECT_GE(e.cycle(), 0);
     EXPECT_NE(std::string(e.what()).find("solid"), std::string::npos) << e.what();
-    // The diagnostic also says where: material and element centre (issue 9).
+    // The diagnostic also says where: material and element centre.
     EXPECT_NE(std::string(e.what()).find("(material 'solid', centre ("), std::string::npos) << e.what();
   }
 }

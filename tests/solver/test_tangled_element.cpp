@@ -1,5 +1,5 @@
 // A quad whose edges cross (a "bow-tie") while its area stays positive must not
-// pass silently: the solver names it (stderr) and records it (issue 8: in the buried-structure cases such an
+// pass silently: the solver names it (stderr) and records it (in the buried-structure cases such an
 // element, its top nodes driven below its bottom ones on one side, set the time step for milliseconds with a
 // meaningless density; the one-point area check missed it).
 #include <gtest/gtest.h>

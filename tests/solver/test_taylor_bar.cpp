@@ -3,7 +3,7 @@
 // with their cylinder-impact test: L0 = 25.4 mm, D0 = 7.62 mm, V = 208 m/s,
 // final length L/L0 = 0.885, foot diameter 11.1 mm (Johnson & Cook 1983;
 // re-evaluated by Johnson & Holmquist 1988, J. Appl. Phys. 64, 3901).
-// Issue 4, item 5: final length within 2 %, foot diameter within 5 %.
+// Required: final length within 2 %, foot diameter within 5 %.
 // Sources, mesh convergence and the other tests: docs/theory/explosive-and-steel.md §5.2
 // and tests/solver/long_taylor_bar.cpp.
 #include <gtest/gtest.h>

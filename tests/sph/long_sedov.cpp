@@ -1,4 +1,4 @@
-// Sedov-Taylor point blast (issue 3, must-show 3), spherical, in 2-D
+// Sedov-Taylor point blast, spherical, in 2-D
 // axisymmetric r-z, run through the solver's cycle (Solver<2>): gamma = 1.4,
 // rho0 = 1, E = 1 deposited in the particles within 2.5 spacings of the
 // origin, cold gas (p = 0) elsewhere. The shock radius follows

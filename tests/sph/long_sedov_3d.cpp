@@ -1,4 +1,4 @@
-// Sedov-Taylor point blast in 3-D (issue 3, must-show 3): one octant with
+// Sedov-Taylor point blast in 3-D: one octant with
 // symmetry planes x = 0, y = 0, z = 0 (mirror particles), gamma = 1.4,
 // rho0 = 1, E = 1 for the whole sphere (E/8 in the octant) deposited in the
 // 7 particles within 2.5 spacings of the origin, cold gas (p = 0) elsewhere.

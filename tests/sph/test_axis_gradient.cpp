@@ -119,7 +119,7 @@ std::map<int, ColumnMotion> plane_shock_columns(double speed, double t_end) {
 TEST(SphAxis, PlaneShockMovesTheFirstColumnLikeTheSecond) {
   // A 200 m/s piston into gas at rest, along the axis: a plane shock, the same in every column.
   // With |r| ring weights on the images the first column had moved 17 % further than the second
-  // after 1.2 ms (the axis jet of issue 8 in its simplest form).
+  // after 1.2 ms (the axis jet of the buried-structure case in its simplest form).
   const auto columns = plane_shock_columns(200.0, 1.2e-3);
   for (const auto& [k, c] : columns)
     std::printf("column %2d: v_z %+.4f  u_z %+.5e\n", k, c.velocity, c.displacement);

@@ -1,5 +1,5 @@
-// 1-D planar detonation along a TNT column in SPH (issue 4, "What it must
-// show" 2 and 3): the seed paper's TNT (Table 5, JWL + programmed burn with
+// 1-D planar detonation along a TNT column in SPH:
+// the seed paper's TNT (Table 5, JWL + programmed burn with
 // the default burn width over the smoothing length) in a plane-strain
 // particle column four particles across, mirror planes on the long sides and
 // a rigid wall (mirror) at the lit end x = 0, lit there at t = 0.
@@ -66,7 +66,7 @@ TEST(SphDetonationColumn, FrontSpeedPeakPressureAndEnergy) {
   test::verify({"1-D TNT detonation column (SPH, dx = 0.5 mm): front speed",
                 "D = 6930 m/s (Wang 2005 Table 5)", 6930.0, speed, 0.02, true, "m/s"});
   test::verify({"1-D TNT detonation column (SPH, dx = 0.5 mm): peak mid-column pressure / P_CJ",
-                "0.8 .. 1.1 (issue 4)", 0.95, peak_mid / p_cj, 0.15 / 0.95, true, ""});
+                "0.8 .. 1.1", 0.95, peak_mid / p_cj, 0.15 / 0.95, true, ""});
   // The chemical energy is internal energy from the start: the total must hold.
   const double total = sph.internal_energy() + sph.kinetic_energy();
   test::verify({"1-D TNT detonation column (SPH): energy balance",

@@ -1,5 +1,5 @@
-// Ejecta: particles expanded past the smoothing-length cap (issue 8;
-// docs/theory/sph.md, "Ejecta"). In the volume form particle i's continuity
+// Ejecta: particles expanded past the smoothing-length cap
+// (docs/theory/sph.md, "Ejecta"). In the volume form particle i's continuity
 // weighs neighbour j by its volume V_j = m_j / eta_j. Once h stops at
 // h_max_factor h0, nothing ties V_j to the kernel any more: two ejecta that
 // drift apart slowly stay in each other's support, each one's expansion

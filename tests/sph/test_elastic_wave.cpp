@@ -1,4 +1,4 @@
-// Elastic P-wave in an SPH solid column (issue 3, must-show 4): the column
+// Elastic P-wave in an SPH solid column: the column
 // moves at -v0 onto a rigid wall at x = 0; the compression front runs back
 // at c_p = sqrt((K + 4G/3) / rho) (uniaxial strain: symmetry planes at y = 0
 // and y = H keep the lateral strain zero). The front (where the particle

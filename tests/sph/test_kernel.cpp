@@ -1,4 +1,4 @@
-// Kernel normalisation and gradient consistency (issue 3, unit tests).
+// Kernel normalisation and gradient consistency (unit tests).
 #include <gtest/gtest.h>
 
 #include <cmath>

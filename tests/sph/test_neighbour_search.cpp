@@ -1,4 +1,4 @@
-// Cell-list neighbour search against brute force (issue 3, must-show 1).
+// Cell-list neighbour search against brute force.
 #include <gtest/gtest.h>
 
 #include <random>

@@ -1,4 +1,4 @@
-// Particle generation: volumes, grading, bad input (issue 3, "Particle parts" and must-show 7).
+// Particle generation: volumes, grading, bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Sod shock tube with SPH (issue 3, must-show 2): gamma = 1.4, left (1, 0, 1),
+// Sod shock tube with SPH: gamma = 1.4, left (1, 0, 1),
 // right (0.125, 0, 0.1), t = 0.2, against the exact Riemann solution.
 //
 // The tube is a 2-D plane strip of a few particle rows between two symmetry

@@ -1,4 +1,4 @@
-// SPH parts in case files (issue 3, "Particle parts" and must-show 7): a
+// SPH parts in case files: a
 // filled part runs through run_model; bad particle input names its key.
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,5 +1,5 @@
 // Velocity gradient of a linear field, with and without the kernel-gradient
-// correction; conservation properties of the sums (issue 3, unit tests).
+// correction; conservation properties of the sums (unit tests).
 #include <gtest/gtest.h>
 
 #include <random>

@@ -1,4 +1,4 @@
-// Tensile stability (issue 3, must-show 5): a free elastic plate (plane
+// Tensile stability: a free elastic plate (plane
 // strain, 60 x 6 particles) vibrating in its first axial mode,
 // v_x = a c_plate cos(pi x / L), goes through compression and tension every
 // period T = 2 L / c_plate. Without a remedy the tensile instability (Swegle,

@@ -1,4 +1,4 @@
-// Google Benchmark of the element force loop (issue 2, item 8): stress
+// Google Benchmark of the element force loop: stress
 // divergence plus hourglass resistance of one-point hexes and quads, the
 // dominant kernel of the FEM cycle. Reports time per element.
 #include <benchmark/benchmark.h>

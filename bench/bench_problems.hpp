@@ -1,5 +1,5 @@
 #pragma once
-// The standard problems of the whole-run benchmark (issue 10), built in code
+// The standard problems of the whole-run benchmark, built in code
 // so that `camouflet_bench` and the thread-consistency tests run the same
 // models. Each builder takes the requested size (elements or particles) and
 // scales its resolution to it; the full sizes are the issue's.

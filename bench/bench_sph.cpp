@@ -1,4 +1,4 @@
-// SPH micro-benchmarks (issue 3, must-show 8): the cell-list neighbour search
+// SPH micro-benchmarks: the cell-list neighbour search
 // and the force loop, on gas blocks in 2-D and 3-D. Counters report the mean
 // neighbour count and the time per particle.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Whole-run benchmark command (issue 10): builds one of the standard problems
+// Whole-run benchmark command: builds one of the standard problems
 // of bench/bench_problems.hpp, runs it on the requested thread count and
 // prints ONE JSON line with the grind time.
 //

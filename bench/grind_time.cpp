@@ -1,4 +1,4 @@
-// Grind-time driver (issue 2, item 8; issue 10 targets): an elastic 3-D block
+// Grind-time driver (docs/performance.md, "Targets"): an elastic 3-D block
 // of about 100k hex8 elements (or quad4 with --2d) hit by a velocity field,
 // stepped for a number of cycles; prints the wall time per element-cycle of
 // the whole explicit cycle. Threads follow OMP_NUM_THREADS.

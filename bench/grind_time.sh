@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Grind time of the explicit FEM cycle (issue 2, item 8): builds the benchmark
+# Grind time of the explicit FEM cycle: builds the benchmark
 # tree (build-bench/, Release, benchmarks on) and runs an elastic problem of
 # about 100k hex8 elements on 1 and 2 OpenMP threads, printing ns per
-# element-cycle. Issue 10 targets ~325 ns single core and >= 1.85x on 2 threads.
+# element-cycle. The targets are ~325 ns single core and >= 1.85x on 2 threads.
 # Usage: bench/grind_time.sh [elements] [cycles]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# SPH grind time (issue 3, must-show 8): ns per particle-cycle of the whole SPH
+# SPH grind time: ns per particle-cycle of the whole SPH
 # cycle (neighbour update, forces, kick/drift, kinematics, material update) for
 # ~100k particles in 2-D and 3-D, on 1 and 2 threads, with the mean neighbour
 # count (from the force-loop benchmark). Needs a build with benchmarks:

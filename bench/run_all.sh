@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the whole-run benchmark (issue 10) on every standard problem on 1 and
+# Runs the whole-run benchmark on every standard problem on 1 and
 # 2 threads and appends the JSON lines to bench/results/<date>.jsonl.
 # Usage: bench/run_all.sh [--size-scale F]   (F < 1 scales every problem down, e.g. 0.1)
 # Builds build-bench/ (Release, benchmarks on). The machine's load average is

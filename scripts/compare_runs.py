@@ -2,7 +2,7 @@
 """Side-by-side table of the headline results of several buried-structure runs
 (`camouflet compare OUTDIR...`, docs/buried-structure.md "Comparing runs").
 
-Its first use is the convergence table of issue 8 (coarse -> default -> paper
+Its first use is the buried-structure case's convergence table (coarse -> default -> paper
 resolution of the same case), but any runs of cases made by `camouflet
 generate` can be compared. Every quantity has the report's definition
 (scripts/run_metrics.py). Writes a Markdown table to standard output (one row

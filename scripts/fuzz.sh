@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the case reader and the Gmsh import with libFuzzer (issue 9): a clang
+# Fuzzes the case reader and the Gmsh import with libFuzzer: a clang
 # build in build-fuzz/ with -DCAMOUFLET_FUZZ=ON, then the CTest tests labelled
 # "fuzz", each running CAMOUFLET_FUZZ_SECONDS (default 60) seconds.
 # -O1 -g1: line numbers in reports and a faster compile. CAMOUFLET_JOBS

@@ -207,7 +207,7 @@ def main():
             tables.append(
                 "<h2>In-structure shock against TM-5 averages</h2>"
                 f"<p>TM-5 averages over R = {standoff:g} … {standoff + length:g} m from "
-                "<code>camouflet empirical --csv</code> (n = 2.5 and 2, f = 0.6). The criterion of issue 8 is "
+                "<code>camouflet empirical --csv</code> (n = 2.5 and 2, f = 0.6). The criterion is "
                 "0.5 × the lower to 2 × the upper average. Accelerations are raw gauge values (not filtered).</p>"
                 "<table><tr><th>where</th><th>peak velocity [m/s]</th><th>TM-5 V<sub>avg</sub> [m/s]</th>"
                 "<th>within criterion</th><th>peak acceleration [g]</th><th>TM-5 a<sub>avg</sub> [g]</th></tr>" +

@@ -113,7 +113,7 @@ def tm5_functions(Z):
 
 
 def band_ratio(Z, peak):
-    """How far a peak stress [MPa] lies outside the TM-5 band widened by 1.5 (issue 8, must-show 2):
+    """How far a peak stress [MPa] lies outside the TM-5 band widened by 1.5:
     1 inside; peak / lower edge below it (< 1); peak / upper edge above it (> 1). Function 1 lies above
     Function 2 below Z = 1, so the edges are the smaller and larger of the two."""
     f1, f2 = tm5_functions(Z)

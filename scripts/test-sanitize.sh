@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The quick test suite under AddressSanitizer + UndefinedBehaviorSanitizer
-# (issue 9): a build with -DCAMOUFLET_SANITIZE=ON in build-sanitize/
+# (docs/reliability.md): a build with -DCAMOUFLET_SANITIZE=ON in build-sanitize/
 # (-O1 -g1: line numbers in reports, a faster compile than full debug info).
 # UBSan is compiled with -fno-sanitize-recover=all, so every report (ASan or
 # UBSan) ends its test process and fails the test.

@@ -171,7 +171,9 @@ double soil_release_modulus(const ThreePhaseSoilConstants& c, double v, double p
   const double cutoff = p0 - (1.0 - damage) * c.tensile_strength;
   const bool cavitation_ahead = pore_pressure - (pressure - cutoff) < cavitation_pressure;
   if (!cavitation_ahead) return soil_unloading_modulus(c, v, pressure, pore_pressure, vw, vs);
-  return vs > 0.0 ? v * c.solid.tangent_modulus(pressure, p0) / vs : inf;
+  // Without grains (a water-only "soil") nothing carries the cavitated stretch.
+  if (!(vs > 0.0)) return soil_unloading_modulus(c, v, pressure, pore_pressure, vw, vs);
+  return v * c.solid.tangent_modulus(pressure, p0) / vs;
 }
 
 SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const SoilCompaction& from,
@@ -239,7 +241,8 @@ SoilState soil_unloading_state(const ThreePhaseSoilConstants& c, double v, const
         s.converged = true;
         const double v_cut = v + f;
         s.bulk_modulus = -v_cut * v_cut / (v * dv_dp_reported);
-        s.release_modulus = -v_cut * v_cut / (v * dv_dp);  // grains alone where cavitated there
+        // The grains alone where the water has cavitated there (no grains: the water's).
+        s.release_modulus = dv_dp < 0.0 ? -v_cut * v_cut / (v * dv_dp) : s.bulk_modulus;
         s.branch = SoilBranch::tension_cutoff;
         return s;
       }

@@ -41,7 +41,7 @@ void read_run(TomlReader& r, Model& model) {
     run.viscosity_linear = v->non_negative("linear", run.viscosity_linear);
     run.viscosity_quadratic = v->non_negative("quadratic", run.viscosity_quadratic);
     run.viscosity_along_acceleration =
-        v->choice("form", {"acceleration", "volumetric"}, "volumetric") == "acceleration";
+        v->choice("form", {"acceleration", "volumetric"}, "acceleration") == "acceleration";
     v->finish();
   }
   if (auto h = r.table("hourglass")) {

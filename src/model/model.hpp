@@ -44,9 +44,9 @@ struct RunControl {
   // Artificial bulk viscosity q = rho l (c_quadratic^2 l |tr D| - c_linear c) tr D, compression only.
   double viscosity_quadratic = 1.5;
   double viscosity_linear = 0.06;
-  // q on the strain rate along the acceleration (Wilkins 1980; true) or on tr D (false,
-  // the default until the soil and structure results are re-verified with it: docs/theory-fem.md).
-  bool viscosity_along_acceleration = false;
+  // q on the strain rate along the acceleration (Wilkins 1980; true, the default: a smooth
+  // convergence takes no q) or on tr D (false, the classic form): docs/theory-fem.md.
+  bool viscosity_along_acceleration = true;
   HourglassForm hourglass = HourglassForm::viscous;
   double hourglass_coefficient = 0.1;
   double energy_error_limit = 0.05;  // relative; warn past half, stop when exceeded (solver/energy_guard.hpp)

@@ -97,6 +97,15 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
   const auto a = column_peaks(out / "group_A.csv");
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
+  // Updated 2 Dec 2026: the bulk viscosity acts on the strain rate along each element's
+  // acceleration by default (fem/fem_elements.hpp, ViscosityControl; it was tr D). This case's
+  // FEM charge and the axis soil above it tangle in either form (warnings from 0.18 ms), and the
+  // structure gauges sit at the wave's arrival at the box at the end of the run, where the front
+  // is steeper under the new form: t9 9.92693e6 -> 1.78727e7 Pa (+80 %; the same sample, the last
+  // before the soil cell at the wall goes into tension), t2 7.01636 -> 8.79465 m/s (+25 %), B2
+  // 1.73535e6 -> 2.14279e6 Pa (+23 %, the front's foot at 0.7 ms), B1 -7.6 %, A1 +4.6 %, B1 speed
+  // -1.7 %. The energy balance closes to 1.9 % (1.6 %). The paper-scale coarse case moves its
+  // ground shock by less than 2 % except A6 (+6 %) and A7 (-35 %) (docs/buried-structure.md).
   // Updated 2 Dec 2026: the soil reports the stiffness of its release on the grains alone as a
   // stable sound speed, which the time step takes (materials/three_phase_soil_law.cpp,
   // soil_release_modulus): the step is shorter wherever compacted soil may release, the values
@@ -122,12 +131,12 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
   // A1 1.74867e8 -> 1.65966e8 Pa, t9 1.28569e7 -> 9.85323e6 Pa (-23 %), t2 6.41329 -> 6.90739 m/s.
   verify_peaks("Reduced buried-structure case: peak ", "regression ",
                {
-                   {"group_B B1 pressure", 1.08780e8, "Pa", b.at("B1.pressure")},
-                   {"group_B B2 pressure", 1.73535e6, "Pa", b.at("B2.pressure")},
-                   {"group_A A1 pressure", 1.69863e8, "Pa", a.at("A1.pressure")},
-                   {"group_B B1 speed (velocity_x)", 26.6506, "m/s", b.at("B1.velocity_x")},
-                   {"structure t9 stress_xx", 9.92693e6, "Pa", s.at("t9.stress_xx")},
-                   {"structure t2 velocity_x", 7.01636, "m/s", s.at("t2.velocity_x")},
+                   {"group_B B1 pressure", 1.00472e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 2.14279e6, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 1.77696e8, "Pa", a.at("A1.pressure")},
+                   {"group_B B1 speed (velocity_x)", 26.1998, "m/s", b.at("B1.velocity_x")},
+                   {"structure t9 stress_xx", 1.78727e7, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 8.79465, "m/s", s.at("t2.velocity_x")},
                });
 
   // `camouflet report` on the same output: the page and its figures (needs
@@ -158,7 +167,7 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   // release did not bound; 1.0 % with the pair weights at the
   // start of the step, 4.1 % with the coarser, 2.4 % heavy charge of the generator before; the join resolves
   // the shock passing it only to first order in the spacing, see tests/case/test_joined_case.cpp), against
-  // 0.2 % for the all-FEM case.
+  // 1.9 % for the all-FEM case, whose FEM charge tangles.
   std::cout << "regression (SPH zone) energy error " << summary.energy.relative_error << "\n";
   EXPECT_LT(summary.energy.relative_error, 0.05);
 
@@ -166,6 +175,12 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
   const auto bars = column_peaks(out / "bars.csv");
+  // Updated 2 Dec 2026: the bulk viscosity acts on the strain rate along each element's
+  // acceleration by default (it was tr D; the particles' viscosity is unchanged, so the moves
+  // come from the FEM soil and the box): rebar 4.53936e-3 -> 5.78735e-3 (+27 %, one bar's
+  // single-point strain at the front wall), B2 3.51030e7 -> 3.20169e7 Pa (-8.8 %, the zone's
+  // corner), A1 3.47361e8 -> 3.19276e8 Pa (-8.1 %), t2 19.7105 -> 20.8466 m/s (+5.8 %), t9
+  // 8.75975e7 -> 9.12064e7 Pa (+4.1 %); B1 +0.3 %. The energy balance closes to 0.16 % (0.16 %).
   // Updated 2 Dec 2026: the soil reports the stiffness of its release on the grains alone as a
   // stable sound speed, which the time step takes (materials/three_phase_soil_law.cpp,
   // soil_release_modulus): the step is shorter wherever compacted soil may release, the values
@@ -202,12 +217,12 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   // 19.2332 m/s, rebar 2.39349e-3 -> 2.70126e-3; B1 and A1 moved less than 3 %.
   verify_peaks("Reduced buried-structure case with SPH zone: peak ", "regression (SPH zone) ",
                {
-                   {"group_B B1 pressure", 2.35376e8, "Pa", b.at("B1.pressure")},
-                   {"group_B B2 pressure", 3.51030e7, "Pa", b.at("B2.pressure")},
-                   {"group_A A1 pressure", 3.47361e8, "Pa", a.at("A1.pressure")},
-                   {"structure t9 stress_xx", 8.75975e7, "Pa", s.at("t9.stress_xx")},
-                   {"structure t2 velocity_x", 19.7105, "m/s", s.at("t2.velocity_x")},
-                   {"rebar front_out.1 axial_strain", 4.53936e-3, "-", bars.at("front_out.1.axial_strain")},
+                   {"group_B B1 pressure", 2.36113e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 3.20169e7, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 3.19276e8, "Pa", a.at("A1.pressure")},
+                   {"structure t9 stress_xx", 9.12064e7, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 20.8466, "m/s", s.at("t2.velocity_x")},
+                   {"rebar front_out.1 axial_strain", 5.78735e-3, "-", bars.at("front_out.1.axial_strain")},
                });
 }
 

@@ -5,8 +5,8 @@
 // took q and was heated 300-700 times above the isentrope at 100 zones, and
 // the shocked density was 10 % low (measured 1 Dec 2026); q on the strain
 // rate along the acceleration (fem_elements.hpp, ViscosityControl) leaves the
-// convergence isentropic. The runs here set form = "acceleration"; the default
-// is still tr D (docs/theory-fem.md, "Artificial viscosity").
+// convergence isentropic. The runs here set form = "acceleration", the default
+// (docs/theory-fem.md, "Artificial viscosity").
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 

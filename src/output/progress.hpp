@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "solver/run.hpp"
+#include "model/run_options.hpp"
 
 namespace camouflet {
 

@@ -6,8 +6,9 @@
 #include <memory>
 
 #include "core/state_visitor.hpp"
+#include "model/run_options.hpp"
+#include "model/run_summary.hpp"
 #include "output/snapshot.hpp"
-#include "solver/run.hpp"
 
 namespace camouflet {
 

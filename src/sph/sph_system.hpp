@@ -51,7 +51,7 @@
 #include "materials/material.hpp"
 #include "model/model.hpp"
 #include "output/snapshot.hpp"
-#include "solver/run.hpp"
+#include "model/run_summary.hpp"
 #include "sph/kernel.hpp"
 #include "sph/mirror_boundary.hpp"
 #include "sph/neighbour_search.hpp"

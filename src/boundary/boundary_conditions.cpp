@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <unordered_map>
 
 #include "core/parameters.hpp"
 
@@ -86,6 +87,43 @@ BoundaryConditions<D>::BoundaryConditions(const Model& model)
         break;  // dashpots on faces: coupling/transmitting_boundary.hpp
     }
   }
+  orthogonalise_planes();
+}
+
+// constrain() removes the planes' normal components one after another and then
+// sets the components. That is the projection onto the intersection of the
+// constraints only if the normals of one node are orthonormal and orthogonal to
+// its constrained axes: a node on two planes at an angle other than 90 degrees
+// (the edge of a conical sector) would otherwise leave the first plane again.
+// So each node's normals are replaced by their Gram-Schmidt basis, taken after
+// the axes it has components on; a normal in the span of the earlier ones adds
+// no constraint and is dropped.
+template <int D>
+void BoundaryConditions<D>::orthogonalise_planes() {
+  std::unordered_map<std::int64_t, std::vector<std::array<double, D>>> basis;
+  for (const Component& c : components_) {
+    std::array<double, D> axis{};
+    axis[static_cast<std::size_t>(c.component)] = 1.0;
+    basis[c.node].push_back(axis);
+  }
+  std::vector<Plane> kept;
+  kept.reserve(planes_.size());
+  for (Plane p : planes_) {
+    auto& earlier = basis[p.node];
+    for (const auto& b : earlier) {
+      double dot = 0.0;
+      for (int i = 0; i < D; ++i) dot += p.normal[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(i)];
+      for (int i = 0; i < D; ++i) p.normal[static_cast<std::size_t>(i)] -= dot * b[static_cast<std::size_t>(i)];
+    }
+    double len = 0.0;
+    for (int i = 0; i < D; ++i) len += p.normal[static_cast<std::size_t>(i)] * p.normal[static_cast<std::size_t>(i)];
+    len = std::sqrt(len);
+    if (len < 1e-9) continue;  // already constrained by the earlier ones
+    for (int i = 0; i < D; ++i) p.normal[static_cast<std::size_t>(i)] /= len;
+    earlier.push_back(p.normal);
+    kept.push_back(p);
+  }
+  planes_ = std::move(kept);
 }
 
 template <int D>

@@ -62,6 +62,7 @@ class BoundaryConditions {
     std::array<double, D> force;  // N
   };
   double scale(int history, double time) const;
+  void orthogonalise_planes();
 
   std::vector<Component> components_;
   std::vector<Plane> planes_;

@@ -1,5 +1,6 @@
-// Converging shocks: Noh's cylindrical implosion in r-z and in 3-D against the
-// exact solution (tests/solver/noh_implosion.hpp), at two resolutions each,
+// Converging shocks: Noh's cylindrical implosion in r-z and in 3-D and his
+// spherical one in 3-D against the exact solution (tests/solver/noh_implosion.hpp),
+// at two resolutions each,
 // and the r-z run with the quadratic viscosity coefficient from 1 to 2.
 // With q on tr D the smooth convergence ahead of the shock (tr D = -V/R there)
 // took q and was heated 300-700 times above the isentrope at 100 zones, and
@@ -17,26 +18,29 @@ using namespace camouflet;
 
 namespace {
 
-void check_noh(test::NohGeometry geometry) {
+void check_noh(test::NohGeometry geometry, int coarse_zones = 100) {
   test::NohResult previous;
-  for (int zones : {100, 200}) {
+  for (int zones : {coarse_zones, 2 * coarse_zones}) {
     test::NohSpec spec;
     spec.geometry = geometry;
     spec.zones = zones;
+    spec.max_cycles = 60 * zones;  // 27-32 per zone at CFL 0.5
     const test::NohResult r = test::run_noh(spec);
     const std::string res = fmt::format("Noh implosion, {}, FEM {} zones", test::noh_name(geometry), zones);
     fmt::print("{}: shocked density {:.3f} (exact {:.0f}), shock {:.4f} m (exact {:.4f}), ahead: pressure {:.2e}, "
                "density {:.2e} off, energy {:.2e}, {} cycles\n",
                res, r.shocked_density, r.exact_shocked_density, r.shock_radius, r.exact_shock_radius,
                r.worst_preshock_pressure, r.worst_preshock_density, r.energy_error, r.cycles);
-    if (zones == 200) {
+    if (zones == 2 * coarse_zones) {
+      const double exact = r.exact_shocked_density;
       test::verify({res + ": shocked density, R in [0.5 R_s, R_s - 3 zones]",
-                    "rho0 ((gamma+1)/(gamma-1))^2 = 16 (Noh 1987)", r.exact_shocked_density, r.shocked_density,
-                    0.05, true, "kg/m^3"});
-      test::record_check(res + ": shocked density error, 100 -> 200 zones", "smaller at the finer mesh",
-                         fmt::format("{:.3f} -> {:.3f} of 16", previous.shocked_density, r.shocked_density),
-                         std::abs(r.shocked_density - 16.0) < std::abs(previous.shocked_density - 16.0));
-      EXPECT_LT(std::abs(r.shocked_density - 16.0), std::abs(previous.shocked_density - 16.0));
+                    fmt::format("rho0 ((gamma+1)/(gamma-1))^{} = {:.0f} (Noh 1987)", exact > 20 ? 3 : 2, exact),
+                    exact, r.shocked_density, 0.05, true, "kg/m^3"});
+      test::record_check(res + fmt::format(": shocked density error, {} -> {} zones", coarse_zones, zones),
+                         "smaller at the finer mesh",
+                         fmt::format("{:.3f} -> {:.3f} of {:.0f}", previous.shocked_density, r.shocked_density, exact),
+                         std::abs(r.shocked_density - exact) < std::abs(previous.shocked_density - exact));
+      EXPECT_LT(std::abs(r.shocked_density - exact), std::abs(previous.shocked_density - exact));
     }
     test::verify({res + ": largest pre-shock pressure error against the isentrope p0 (rho/rho0)^gamma",
                   "isentropic compression ahead of the shock (Noh 1987)", 0.0, r.worst_preshock_pressure, 0.05,
@@ -59,6 +63,17 @@ TEST(NohImplosion, CylindricalRzAtTwoResolutions) {
 
 TEST(NohImplosion, CylindricalThreeDimensionalAtTwoResolutions) {
   check_noh(test::NohGeometry::cylindrical_3d);
+}
+
+// The spherical shock's start-up error (the shocked density's deficit, Noh's
+// "wall heating") is first order in the zone and twice the cylinder's: 20 %,
+// 11 %, 5.9 % and 3.0 % at 100, 200, 400 and 800 zones (2 Dec 2026), so the
+// pair checked is 400 and 800. The r-z wedge (NohGeometry::rz_spherical) is not
+// here: its zones next to the centre tangle at t = 0.025-0.05 s, nodes of its
+// two rays sliding apart, a mode that stiffness-form hourglass control only
+// delays (docs/theory-fem.md).
+TEST(NohImplosion, SphericalThreeDimensionalAtTwoResolutions) {
+  check_noh(test::NohGeometry::spherical_3d, 400);
 }
 
 // The quadratic coefficient from 1 to 2 (q on tr D went unstable next to the

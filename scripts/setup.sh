@@ -6,7 +6,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 
-packages=(g++ cmake ninja-build pkg-config python3 python3-matplotlib
+packages=(g++ cmake ninja-build pkg-config python3 python3-numpy python3-scipy python3-matplotlib
           libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libtomlplusplus-dev libcli11-dev
           libeigen3-dev libgmsh-dev libhdf5-dev)
 missing=()

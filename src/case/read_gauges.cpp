@@ -20,11 +20,34 @@ void read_gauges(TomlReader& root, Model& model) {
     // Gauges among particles: follow the nearest particle, or interpolate at the fixed point.
     const bool interpolate = g.choice("particles", {"follow", "interpolate"}, "follow") == "interpolate";
     const bool has_points = g.has("points"), has_line = g.has("from") || g.has("to") || g.has("count");
+    const bool has_members = g.has("members");
     g.allow({"from", "to", "count"});
-    if (has_points == has_line)
-      g.fail(has_points ? "from" : "points",
-             "a gauge group needs either `points = [{name, position}, ...]` or a line `from`, `to`, `count`");
-    if (has_points) {
+    if (int(has_points) + int(has_line) + int(has_members) != 1)
+      g.fail(has_points ? (has_line ? "from" : "members") : has_line ? "members" : "points",
+             "a gauge group needs exactly one of `points = [{name, position}, ...]`, a line `from`, `to`, "
+             "`count`, or `members = [{name, material, min, max}, ...]`");
+    if (has_members) {
+      auto members = g.tables("members");
+      if (members.empty()) g.fail("members", "needs at least one member");
+      std::set<std::string> names;
+      for (auto& m : members) {
+        GaugePoint gauge;
+        gauge.name = m.string("name");
+        check_name(m, "name", gauge.name);
+        if (!names.insert(gauge.name).second)
+          m.fail("name", fmt::format("member '{}' appears twice", gauge.name));
+        gauge.member = true;
+        if (m.has("material")) gauge.member_material = material_index(model, m, "material");
+        gauge.region_min = m.vector("min", dim);
+        gauge.region_max = m.vector("max", dim);
+        for (int i = 0; i < dim; ++i)
+          if (!(gauge.region_min[static_cast<std::size_t>(i)] < gauge.region_max[static_cast<std::size_t>(i)]))
+            m.fail("max", fmt::format("component {} must exceed min's", i + 1));
+        gauge.where = m.where("min");
+        m.finish();
+        group.points.push_back(std::move(gauge));
+      }
+    } else if (has_points) {
       auto points = g.tables("points");
       if (points.empty()) g.fail("points", "needs at least one gauge");
       std::set<std::string> names;

@@ -13,22 +13,23 @@
 
 namespace camouflet::case_detail {
 
-namespace {
-
-int find_material(const Model& model, TomlReader& part, const std::string& name) {
+int material_index(const Model& model, TomlReader& table, const std::string& key) {
+  const std::string name = table.string(key);
   std::vector<std::string> names;
   for (std::size_t m = 0; m < model.materials.size(); ++m) {
     if (model.materials[m].name == name) return static_cast<int>(m);
     names.push_back(model.materials[m].name);
   }
   const std::string guess = nearest(name, names);
-  part.fail("material",
-            guess.empty()
-                ? fmt::format("no material '{}' is defined ({})", name,
-                              names.empty() ? "the case has no [materials] section"
-                                            : "defined: " + fmt::format("{}", fmt::join(names, ", ")))
-                : fmt::format("no material '{}' is defined; did you mean '{}'?", name, guess));
+  table.fail(key,
+             guess.empty()
+                 ? fmt::format("no material '{}' is defined ({})", name,
+                               names.empty() ? "the case has no [materials] section"
+                                             : "defined: " + fmt::format("{}", fmt::join(names, ", ")))
+                 : fmt::format("no material '{}' is defined; did you mean '{}'?", name, guess));
 }
+
+namespace {
 
 // Reads the block and meshes it: a plain block, or a wall with its steel
 // layers when the part has `rebar_layers` (case/read_reinforcement.cpp).
@@ -249,7 +250,7 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     part.name = p.string("name");
     check_name(p, "name", part.name);
     if (!seen.insert(part.name).second) p.fail("name", fmt::format("part '{}' is defined twice", part.name));
-    part.material = find_material(model, p, p.string("material"));
+    part.material = material_index(model, p, "material");
     const std::string kind = p.choice("kind", {"fem", "sph"}, "fem");
     part.kind = kind == "sph" ? PartKind::sph : PartKind::fem;
     part.initial_velocity = p.vector("initial_velocity", dim, {0, 0, 0});

@@ -9,23 +9,6 @@
 
 namespace camouflet::case_detail {
 
-namespace {
-
-int material_index(const Model& model, TomlReader& table, const std::string& key) {
-  const std::string name = table.string(key);
-  std::vector<std::string> names;
-  for (std::size_t m = 0; m < model.materials.size(); ++m) {
-    if (model.materials[m].name == name) return static_cast<int>(m);
-    names.push_back(model.materials[m].name);
-  }
-  const std::string guess = nearest(name, names);
-  table.fail(key, guess.empty()
-                      ? fmt::format("no material '{}' is defined", name)
-                      : fmt::format("no material '{}' is defined; did you mean '{}'?", name, guess));
-}
-
-}  // namespace
-
 void read_rebar_wall(TomlReader& part, const BlockSpec& block, Model& model) {
   if (block.grading[0] != 1.0 || block.grading[1] != 1.0 || block.grading[2] != 1.0)
     part.fail("rebar_layers", "a part with rebar_layers takes no `grading` in its block");

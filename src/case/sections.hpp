@@ -34,4 +34,8 @@ void check_model(const Model& model);
 // A name used in a file name or a CSV header: letters, digits, '_', '-', '.'.
 void check_name(const TomlReader& table, const std::string& key, const std::string& name);
 
+// Index into Model::materials of the material named by `key`; fails at that key, with the
+// nearest defined name, when there is none (case/read_parts.cpp).
+int material_index(const Model& model, TomlReader& table, const std::string& key);
+
 }  // namespace camouflet::case_detail

@@ -443,6 +443,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
     fmt::format_to(out, "  {{ name = \"{}\", position = [{:.6g}, {:.6g}] }},  # {}\n", tg.name, tg.range,
                    -tg.depth, tg.where);
   b += "]\n";
+  buried_detail::write_member_gauges(s, false, b);
   return b;
 }
 
@@ -450,6 +451,40 @@ namespace buried_detail {
 
 void check_common(const BuriedStructureSpec& s, double a) {
   check(s, a);
+}
+
+void write_member_gauges(const BuriedStructureSpec& s, bool three_d, std::string& b) {
+  auto out = std::back_inserter(b);
+  // The walls take the box's full height, the roof and the floor the span between the walls, so no
+  // element belongs to two members; in 3-D the roof and the floor stop at the side wall.
+  const double r0 = s.standoff, r1 = s.standoff + s.box_length, t = s.wall_thickness;
+  const double top = -s.top_depth, bottom = -s.top_depth - s.box_height, eps = 1e-6;
+  struct Member {
+    const char* name;
+    double r_lo, r_hi, z_lo, z_hi, y_hi;
+  };
+  const double half_width = 0.5 * s.box_width;
+  const Member members[] = {
+      {"front_wall", r0, r0 + t, bottom, top, half_width},
+      {"roof", r0 + t, r1 - t, top - t, top, half_width - t},
+      {"floor", r0 + t, r1 - t, bottom, bottom + t, half_width - t},
+      {"rear_wall", r1 - t, r1, bottom, top, half_width},
+  };
+  b += "\n# Members of the box (docs/buried-structure.md, \"In-structure shock\"): the mass-weighted mean motion\n"
+       "# of the concrete elements centred in each box, the span's rigid-body motion (members.csv).\n";
+  b += "[[gauges]]\nname = \"members\"\nmembers = [\n";
+  for (const Member& m : members) {
+    if (three_d)
+      fmt::format_to(out,
+                     "  {{ name = \"{}\", material = \"concrete\", min = [{:.9g}, {:.9g}, {:.9g}], "
+                     "max = [{:.9g}, {:.9g}, {:.9g}] }},\n",
+                     m.name, m.r_lo - eps, -eps, m.z_lo - eps, m.r_hi + eps, m.y_hi + eps, m.z_hi + eps);
+    else
+      fmt::format_to(out,
+                     "  {{ name = \"{}\", material = \"concrete\", min = [{:.9g}, {:.9g}], max = [{:.9g}, {:.9g}] }},\n",
+                     m.name, m.r_lo - eps, m.z_lo - eps, m.r_hi + eps, m.z_hi + eps);
+  }
+  b += "]\n";
 }
 
 void write_soil_gauges(const BuriedStructureSpec& s, bool three_d, std::string& b) {

@@ -230,6 +230,7 @@ void write_gauges(const BuriedStructureSpec& s, std::string& b) {
     fmt::format_to(out, "  {{ name = \"{}\", position = [{:.6g}, 0.0, {:.6g}] }},  # {}\n", tg.name, tg.range,
                    -tg.depth, tg.where);
   b += "]\n";
+  write_member_gauges(s, true, b);
 }
 
 }  // namespace

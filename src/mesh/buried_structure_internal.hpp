@@ -30,6 +30,8 @@ std::vector<StructureTarget> structure_targets(const BuriedStructureSpec& s);
 // The soil gauge groups A and B of Fig. 8a as [[gauges]] tables: points
 // (r, z) in r-z, (x, 0, z) in the 3-D symmetry plane.
 void write_soil_gauges(const BuriedStructureSpec& s, bool three_d, std::string& b);
+// The box's members (front wall, roof, floor, rear wall) as member-average gauges (members.csv).
+void write_member_gauges(const BuriedStructureSpec& s, bool three_d, std::string& b);
 
 // The case file's [run], [output] and [materials.*] tables, the same in both
 // geometries but for [run] geometry (`geometry`: "axisymmetric" or "3d").

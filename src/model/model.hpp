@@ -152,6 +152,12 @@ struct GaugePoint {
   // stay at `position` and interpolate the particles there with the kernel
   // (Shepard-normalised; output/gauges.hpp). Set by the group's `particles` key.
   bool interpolate = false;
+  // A member average instead of a point (group key `members`): the mass-weighted mean over the
+  // elements of material `member_material` (any when -1) whose initial centre lies in the box
+  // [region_min, region_max] (output/gauges.hpp).
+  bool member = false;
+  int member_material = -1;
+  std::array<double, 3> region_min{}, region_max{};  // m
 };
 
 struct GaugeGroup {

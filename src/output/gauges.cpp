@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -118,6 +119,88 @@ void sample_interpolated(const LocatedGauge& gauge, const FieldSnapshot& s, std:
   out.insert(out.end(), {pressure * inv, plastic * inv, damage * inv, temperature * inv});
 }
 
+// The elements of a member and the consistent nodal masses of their set, normalised.
+LocatedGauge locate_member(const GaugePoint& gauge, const FieldSnapshot& s) {
+  const int dim = s.dimension, npe = s.nodes_per_element;
+  const bool axisymmetric = s.mode == GeometryMode::axisymmetric;
+  LocatedGauge located;
+  located.name = gauge.name;
+  std::vector<std::pair<std::int64_t, double>> nodes;  // (node, mass), repeated per element
+  double total = 0.0;
+  const double g = 1.0 / std::sqrt(3.0);  // Gauss points +-1/sqrt 3, weight 1
+  double x[8 * 3];
+  for (std::size_t e = 0; e < s.element_count(); ++e) {
+    if (gauge.member_material >= 0 && !s.element_material.empty() &&
+        s.element_material[e] != gauge.member_material)
+      continue;
+    gather_element(dim, s.node_position, s.connectivity, static_cast<std::int64_t>(e), x);
+    bool inside = true;
+    for (int i = 0; i < dim; ++i) {
+      double c = 0.0;
+      for (int a = 0; a < npe; ++a) c += x[a * dim + i] / npe;
+      inside = inside && c >= gauge.region_min[static_cast<std::size_t>(i)] &&
+               c <= gauge.region_max[static_cast<std::size_t>(i)];
+    }
+    if (!inside) continue;
+    const double rho = s.element_density.empty() ? 1.0 : s.element_density[e];
+    double share[8] = {}, mass = 0.0;
+    for (int q = 0; q < (dim == 3 ? 8 : 4); ++q) {
+      const Natural xi{(q & 1) ? g : -g, (q & 2) ? g : -g, dim == 3 ? ((q & 4) ? g : -g) : 0.0};
+      double n[8];
+      shape_functions(dim, xi, n);
+      double weight = jacobian_determinant(dim, std::span<const double>(x, static_cast<std::size_t>(npe * dim)), xi);
+      if (axisymmetric) {
+        double r = 0.0;
+        for (int a = 0; a < npe; ++a) r += n[a] * x[a * dim];
+        weight *= 2.0 * std::numbers::pi * r;
+      }
+      for (int a = 0; a < npe; ++a) share[a] += rho * n[a] * weight;
+      mass += rho * weight;
+    }
+    located.member_elements.emplace_back(static_cast<std::int64_t>(e), mass);
+    for (int a = 0; a < npe; ++a) nodes.emplace_back(s.connectivity[e * static_cast<std::size_t>(npe) + a], share[a]);
+    total += mass;
+  }
+  if (located.member_elements.empty() || !(total > 0.0)) {
+    const std::span<const double> lo(gauge.region_min.data(), static_cast<std::size_t>(dim));
+    const std::span<const double> hi(gauge.region_max.data(), static_cast<std::size_t>(dim));
+    throw InputError(gauge.where, fmt::format("member '{}': no element centre of its material lies in the box "
+                                              "({}) .. ({})",
+                                              gauge.name, fmt::join(lo, ", "), fmt::join(hi, ", ")));
+  }
+  for (auto& [e, m] : located.member_elements) m /= total;
+  std::sort(nodes.begin(), nodes.end());
+  for (const auto& [node, m] : nodes) {
+    if (!located.member_nodes.empty() && located.member_nodes.back().first == node)
+      located.member_nodes.back().second += m / total;
+    else
+      located.member_nodes.emplace_back(node, m / total);
+  }
+  return located;
+}
+
+void sample_member(const LocatedGauge& gauge, const FieldSnapshot& s, std::vector<double>& out) {
+  const int dim = s.dimension;
+  for (auto field : {s.node_position, s.node_displacement, s.node_velocity, s.node_acceleration})
+    for (int i = 0; i < dim; ++i) {
+      double v = 0.0;
+      if (!field.empty())
+        for (const auto& [node, w] : gauge.member_nodes) v += w * field[static_cast<std::size_t>(node * dim + i)];
+      out.push_back(v);
+    }
+  SymTensor sigma{};
+  double pressure = 0.0, plastic = 0.0, damage = 0.0, temperature = 0.0;
+  for (const auto& [e, w] : gauge.member_elements) {
+    if (!s.element_stress.empty()) sigma += s.element_stress[static_cast<std::size_t>(e)] * w;
+    pressure += w * at_or_zero(s.element_pressure, e);
+    plastic += w * at_or_zero(s.element_plastic_strain, e);
+    damage += w * at_or_zero(s.element_damage, e);
+    temperature += w * at_or_zero(s.element_temperature, e);
+  }
+  out.insert(out.end(), {sigma.xx, sigma.yy, sigma.zz, sigma.xy, sigma.yz, sigma.zx});
+  out.insert(out.end(), {pressure, plastic, damage, temperature});
+}
+
 }  // namespace
 
 std::vector<std::string> gauge_quantities(int dim) {
@@ -132,6 +215,7 @@ std::vector<std::string> gauge_quantities(int dim) {
 
 LocatedGauge locate_gauge(const GaugePoint& gauge, const FieldSnapshot& initial) {
   const int dim = initial.dimension;
+  if (gauge.member) return locate_member(gauge, initial);
   LocatedGauge located;
   located.name = gauge.name;
   const std::span<const double> x(gauge.position.data(), static_cast<std::size_t>(dim));
@@ -184,6 +268,7 @@ LocatedGauge locate_gauge(const GaugePoint& gauge, const FieldSnapshot& initial)
 
 void sample_gauge(const LocatedGauge& gauge, const FieldSnapshot& s, std::vector<double>& out) {
   const int dim = s.dimension;
+  if (gauge.is_member()) return sample_member(gauge, s, out);
   if (gauge.element >= 0) {
     const int npe = s.nodes_per_element;
     double n[8];

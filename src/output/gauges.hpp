@@ -17,6 +17,15 @@
 // makes constant fields exact and linear ones exact where the support is
 // symmetric (interior). Its position column is the fixed point; the other
 // columns are interpolated. Cost: one pass over the particles per gauge and sample.
+//
+// A member gauge (GaugePoint::member, group key `members`) is the mass-weighted
+// mean over a set of elements, chosen at t = 0 by material and by the box that
+// holds their centres: the members of a structure (a wall, the roof, the
+// floor). Its nodal columns weigh each node by its consistent share of the
+// set's mass, m_a = sum_e integral rho N_a dV (Gauss 2x2(x2), ring weight
+// 2 pi r in r-z), so its velocity is the set's momentum over its mass, the
+// span's rigid-body velocity; its element columns weigh each element by its
+// mass (mean stress, mean damage). Its position column is the centre of mass.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -35,6 +44,9 @@ struct LocatedGauge {
   std::int64_t particle = -1;     // 0-based; -1 when in an element
   bool interpolate = false;       // fixed point, kernel-interpolated among particles
   std::array<double, 3> point{};  // m, the fixed point of an interpolating gauge
+  // Member gauge: (node, mass share) and (element, mass share), each summing to 1.
+  std::vector<std::pair<std::int64_t, double>> member_nodes, member_elements;
+  bool is_member() const { return !member_elements.empty(); }
 };
 
 // Column names sampled for every gauge, in CSV order: position, displacement,
@@ -44,7 +56,8 @@ struct LocatedGauge {
 std::vector<std::string> gauge_quantities(int dim);
 
 // Throws InputError at gauge.where when the point lies outside the mesh and
-// outside every particle's support, or when an interpolating gauge lies in the mesh.
+// outside every particle's support, when an interpolating gauge lies in the
+// mesh, or when a member's box holds no element centre of its material.
 LocatedGauge locate_gauge(const GaugePoint& gauge, const FieldSnapshot& initial);
 
 // Values of every gauge_quantities() column at this instant, appended to `out`.

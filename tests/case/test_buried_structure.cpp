@@ -93,8 +93,12 @@ TEST(BuriedStructure, PaperCaseReadsAsOneFusedMesh) {
   test::verify({"Buried-structure generator: concrete volume", "ring section 4 m x 1 m, 0.1 m walls", box,
                 volume_of(model, "concrete"), 1e-7, true, "m^3"});
 
-  ASSERT_EQ(model.gauges.size(), 3u);
-  EXPECT_EQ(model.gauges[2].points.size(), 9u);  // targets 1-9
+  ASSERT_EQ(model.gauges.size(), 4u);
+  EXPECT_EQ(model.gauges[2].points.size(), 9u);
+  // The box's members, averaged (members.csv).
+  ASSERT_EQ(model.gauges[3].points.size(), 4u);
+  for (const auto& m : model.gauges[3].points) EXPECT_TRUE(m.member) << m.name;
+  EXPECT_EQ(model.gauges[3].points[0].name, "front_wall");  // targets 1-9
   // Group B on the 45-degree line from the charge centre.
   for (const auto& p : model.gauges[1].points)
     EXPECT_NEAR(p.position[0], -0.5 - p.position[1], 1e-5) << p.name;

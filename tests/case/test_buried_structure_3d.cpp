@@ -120,8 +120,12 @@ TEST(BuriedStructure3d, CaseReadsAsOneFusedHalfModel) {
                 domain - outer - charge, volume_of(model, "soil"), 1e-9, true, "m^3"});
 
   // Gauges: groups A and B and targets 1-9, all in the symmetry plane.
-  ASSERT_EQ(model.gauges.size(), 3u);
+  ASSERT_EQ(model.gauges.size(), 4u);
   EXPECT_EQ(model.gauges[2].points.size(), 9u);
+  // The box's members, averaged (members.csv).
+  ASSERT_EQ(model.gauges[3].points.size(), 4u);
+  for (const auto& m : model.gauges[3].points) EXPECT_TRUE(m.member) << m.name;
+  EXPECT_EQ(model.gauges[3].points[0].name, "front_wall");
   for (const auto& g : model.gauges)
     for (const auto& p : g.points) EXPECT_EQ(p.position[1], 0.0) << p.name;
   for (const auto& p : model.gauges[1].points)

@@ -7,6 +7,18 @@
 
 namespace camouflet::case_detail {
 
+namespace {
+
+// A gauge's or member's name: usable in a CSV header, and not used twice in its group.
+std::string unique_name(TomlReader& entry, std::set<std::string>& names, const char* what) {
+  std::string name = entry.string("name");
+  check_name(entry, "name", name);
+  if (!names.insert(name).second) entry.fail("name", fmt::format("{} '{}' appears twice", what, name));
+  return name;
+}
+
+}  // namespace
+
 void read_gauges(TomlReader& root, Model& model) {
   const int dim = model.dimension();
   std::set<std::string> groups;
@@ -32,10 +44,7 @@ void read_gauges(TomlReader& root, Model& model) {
       std::set<std::string> names;
       for (auto& m : members) {
         GaugePoint gauge;
-        gauge.name = m.string("name");
-        check_name(m, "name", gauge.name);
-        if (!names.insert(gauge.name).second)
-          m.fail("name", fmt::format("member '{}' appears twice", gauge.name));
+        gauge.name = unique_name(m, names, "member");
         gauge.member = true;
         if (m.has("material")) gauge.member_material = material_index(model, m, "material");
         gauge.region_min = m.vector("min", dim);
@@ -53,10 +62,7 @@ void read_gauges(TomlReader& root, Model& model) {
       std::set<std::string> names;
       for (auto& p : points) {
         GaugePoint gauge;
-        gauge.name = p.string("name");
-        check_name(p, "name", gauge.name);
-        if (!names.insert(gauge.name).second)
-          p.fail("name", fmt::format("gauge '{}' appears twice", gauge.name));
+        gauge.name = unique_name(p, names, "gauge");
         gauge.position = p.vector("position", dim);
         gauge.where = p.where("position");
         gauge.interpolate = interpolate;

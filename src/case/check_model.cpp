@@ -93,22 +93,13 @@ bool near_particle(const Model& model, std::span<const double> x) {
 // A member gauge needs at least one element of its material centred in its box.
 void check_member(const Model& model, const GaugePoint& g, const std::string& group) {
   const FemMesh& mesh = model.mesh;
-  const int dim = model.dimension();
-  const auto npe = static_cast<std::size_t>(mesh.nodes_per_element);
   for (std::size_t e = 0; e < mesh.element_count(); ++e) {
     const int part = mesh.element_part.empty() ? -1 : mesh.element_part[e];
     const int material = part >= 0 ? model.parts[static_cast<std::size_t>(part)].material : -1;
     if (g.member_material >= 0 && material != g.member_material) continue;
-    bool inside = true;
-    for (int i = 0; i < dim; ++i) {
-      double c = 0.0;
-      for (std::size_t a = 0; a < npe; ++a)
-        c += mesh.coordinates[static_cast<std::size_t>(mesh.connectivity[e * npe + a]) * static_cast<std::size_t>(dim) +
-                              static_cast<std::size_t>(i)] /
-             static_cast<double>(npe);
-      inside = inside && c >= g.region_min[static_cast<std::size_t>(i)] && c <= g.region_max[static_cast<std::size_t>(i)];
-    }
-    if (inside) return;
+    if (element_centre_in_box(mesh.dimension, mesh.coordinates, mesh.connectivity, static_cast<std::int64_t>(e),
+                              g.region_min, g.region_max))
+      return;
   }
   throw InputError(g.where, fmt::format("member '{}' of gauge group '{}': no element centre{} lies in its box",
                                         g.name, group,

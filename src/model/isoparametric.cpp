@@ -125,6 +125,19 @@ void gather_element(int dim, std::span<const double> coordinates, std::span<cons
   }
 }
 
+bool element_centre_in_box(int dim, std::span<const double> coordinates, std::span<const std::int64_t> connectivity,
+                           std::int64_t e, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+  const int npe = npe_of(dim);
+  double x[8 * 3];
+  gather_element(dim, coordinates, connectivity, e, x);
+  for (int i = 0; i < dim; ++i) {
+    double c = 0.0;
+    for (int a = 0; a < npe; ++a) c += x[a * dim + i] / npe;
+    if (!(c >= lo[static_cast<std::size_t>(i)] && c <= hi[static_cast<std::size_t>(i)])) return false;
+  }
+  return true;
+}
+
 std::optional<ElementLocation> locate_in_element(int dim, std::span<const double> coordinates,
                                                  std::span<const std::int64_t> connectivity, std::int64_t e,
                                                  std::span<const double> x, double tol) {

@@ -50,4 +50,8 @@ std::optional<ElementLocation> locate_point(int dim, std::span<const double> coo
 void gather_element(int dim, std::span<const double> coordinates, std::span<const std::int64_t> connectivity,
                     std::int64_t e, double* out);
 
+// Whether element e's centre (the mean of its nodes) lies in the box [lo, hi] (member gauges).
+bool element_centre_in_box(int dim, std::span<const double> coordinates, std::span<const std::int64_t> connectivity,
+                           std::int64_t e, const std::array<double, 3>& lo, const std::array<double, 3>& hi);
+
 }  // namespace camouflet

@@ -133,15 +133,10 @@ LocatedGauge locate_member(const GaugePoint& gauge, const FieldSnapshot& s) {
     if (gauge.member_material >= 0 && !s.element_material.empty() &&
         s.element_material[e] != gauge.member_material)
       continue;
+    if (!element_centre_in_box(dim, s.node_position, s.connectivity, static_cast<std::int64_t>(e), gauge.region_min,
+                               gauge.region_max))
+      continue;
     gather_element(dim, s.node_position, s.connectivity, static_cast<std::int64_t>(e), x);
-    bool inside = true;
-    for (int i = 0; i < dim; ++i) {
-      double c = 0.0;
-      for (int a = 0; a < npe; ++a) c += x[a * dim + i] / npe;
-      inside = inside && c >= gauge.region_min[static_cast<std::size_t>(i)] &&
-               c <= gauge.region_max[static_cast<std::size_t>(i)];
-    }
-    if (!inside) continue;
     const double rho = s.element_density.empty() ? 1.0 : s.element_density[e];
     double share[8] = {}, mass = 0.0;
     for (int q = 0; q < (dim == 3 ? 8 : 4); ++q) {

@@ -470,7 +470,7 @@ void write_member_gauges(const BuriedStructureSpec& s, bool three_d, std::string
       {"floor", r0 + t, r1 - t, bottom, bottom + t, half_width - t},
       {"rear_wall", r1 - t, r1, bottom, top, half_width},
   };
-  b += "\n# Members of the box (docs/buried-structure.md, \"In-structure shock\"): the mass-weighted mean motion\n"
+  b += "\n# Members of the box (docs/buried-structure.md, \"In-structure shock in the report\"): the mass-weighted mean motion\n"
        "# of the concrete elements centred in each box, the span's rigid-body motion (members.csv).\n";
   b += "[[gauges]]\nname = \"members\"\nmembers = [\n";
   for (const Member& m : members) {

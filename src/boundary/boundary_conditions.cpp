@@ -132,7 +132,7 @@ double BoundaryConditions<D>::scale(int history, double time) const {
 }
 
 template <int D>
-void BoundaryConditions<D>::add_loads(const double* x, double time, double* f) {
+void BoundaryConditions<D>::add_loads(const double* x, double time, double* f, const double* ring_factor) {
   load_forces_.swap(load_forces_previous_);
   load_forces_.clear();
   for (const auto& load : loads_) {
@@ -148,6 +148,10 @@ void BoundaryConditions<D>::add_loads(const double* x, double time, double* f) {
           // Consistent ring weights for r varying linearly along the face: 2 pi (2 r_a + r_b) / 6.
           wa = 2.0 * std::numbers::pi * (2.0 * ra + rb) / 6.0;
           wb = 2.0 * std::numbers::pi * (ra + 2.0 * rb) / 6.0;
+          if (ring_factor) {
+            wa = 0.5 * ring_factor[a];
+            wb = 0.5 * ring_factor[b];
+          }
         }
         load_forces_.push_back({a, {-p * nx * wa, -p * ny * wa}});
         load_forces_.push_back({b, {-p * nx * wb, -p * ny * wb}});

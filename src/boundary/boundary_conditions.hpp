@@ -23,7 +23,10 @@ class BoundaryConditions {
   explicit BoundaryConditions(const Model& model);
 
   // f (n*D) += pressure loads at time t on the current geometry x.
-  void add_loads(const double* x, double time, double* f);
+  // ring_factor: r-z in area-weighted momentum (FemElements::ring_factors),
+  // each node's share of a face's planar force times its factor, as the
+  // element forces it meets; nullptr: the volume form's consistent ring weights.
+  void add_loads(const double* x, double time, double* f, const double* ring_factor = nullptr);
   // Work of the loads from t_(n-1) to t_n (J): the trapezoid of the load
   // forces of the last two add_loads against v(n-1/2) = v_old over dt_old,
   // the centring of the internal energy (solver.cpp, account_energy).

@@ -29,6 +29,11 @@ void read_run(TomlReader& r, Model& model) {
   run.dt_growth = r.number("dt_growth", run.dt_growth);
   if (!(run.dt_growth >= 1.0)) r.fail("dt_growth", fmt::format("must be at least 1, got {}", run.dt_growth));
   if (r.has("energy_error_limit")) run.energy_error_limit = r.positive("energy_error_limit");
+  if (r.has("axisymmetric_momentum")) {
+    run.area_weighted_momentum = r.choice("axisymmetric_momentum", {"volume", "area"}, "volume") == "area";
+    if (run.area_weighted_momentum && run.mode != GeometryMode::axisymmetric)
+      r.fail("axisymmetric_momentum", "\"area\" needs geometry mode 'axisymmetric'");
+  }
   // Domain box: a node or particle leaving it stops the run.
   const int dim = dimension_of(run.mode);
   if (r.has("domain_min")) run.domain_min = r.vector("domain_min", dim);

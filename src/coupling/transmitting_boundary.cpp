@@ -94,8 +94,13 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
       const double ra = x[q[0] * 2], za = x[q[0] * 2 + 1], rb = x[q[1] * 2], zb = x[q[1] * 2 + 1];
       s = {zb - za, -(rb - ra)};  // counter-clockwise faces: outward normal times length
       w = {0.5, 0.5};
-      if (axisymmetric_)
+      if (axisymmetric_ && elements.area_weighted_momentum()) {
+        // As the element forces at these nodes: the planar share times the ring factor m_a / M_a.
+        const std::vector<double>& ring = elements.ring_factors();
+        w = {0.5 * ring[static_cast<std::size_t>(q[0])], 0.5 * ring[static_cast<std::size_t>(q[1])]};
+      } else if (axisymmetric_) {
         w = {2.0 * std::numbers::pi * (2.0 * ra + rb) / 6.0, 2.0 * std::numbers::pi * (ra + 2.0 * rb) / 6.0};
+      }
     } else {
       double d1[3], d2[3];
       for (int i = 0; i < 3; ++i) {

@@ -277,6 +277,28 @@ void FemElements<D>::set_assembly(ForceAssembly assembly) {
 }
 
 template <int D>
+void FemElements<D>::update_ring_factors(const double* x) {
+  constexpr int N = nodes;
+  // m_a / M_a: the node's mass over its area mass sum_e m_e / (N 2 pi r_bar_e),
+  // the mass-weighted harmonic mean of its elements' ring weights 2 pi r_bar.
+  std::vector<double> area_mass(node_count_, 0.0);
+  ring_factor_.assign(node_count_, 0.0);
+  for (std::size_t e = 0; e < size(); ++e) {
+    if (eroded[e]) continue;
+    const std::int64_t* c = connectivity.data() + e * N;
+    double r = 0.0;
+    for (int a = 0; a < N; ++a) r += x[c[a] * D];
+    const double ring = two_pi * r / N;
+    for (int a = 0; a < N; ++a) {
+      ring_factor_[static_cast<std::size_t>(c[a])] += mass[e] / N;
+      area_mass[static_cast<std::size_t>(c[a])] += mass[e] / (N * ring);
+    }
+  }
+  for (std::size_t n = 0; n < node_count_; ++n)
+    ring_factor_[n] = area_mass[n] > 0.0 ? ring_factor_[n] / area_mass[n] : 0.0;
+}
+
+template <int D>
 double FemElements<D>::add_internal_forces(const double* x, const double* v, double* f, double* f_hourglass,
                                            const HourglassControl& hg, double dt_previous) {
   constexpr int N = nodes;
@@ -289,6 +311,8 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
   // Whether any pack holds stiffness-form energy (the colour paths keep one sum per slot then).
   const bool any_stiff_hg = own_hg ? stiffness_anywhere : hg_stiff && hg_kappa > 0.0;
   const std::size_t ne = size();
+  const bool area = axi && area_weighted_;
+  if (area && ring_factor_.size() != node_count_) update_ring_factors(x);
 
   // One pack of elements lanes.at(0 .. count - 1) (element_pack.hpp): forces
   // computed lane-parallel, scattered into f_out (and the hourglass part into
@@ -335,18 +359,39 @@ double FemElements<D>::add_internal_forces(const double* x, const double* v, dou
         sig[0][2][l] = sig[2][0][l] = s.zx;
       }
     }
-    for (int a = 0; a < N; ++a)
-      for (int i = 0; i < D; ++i) {
-        Pack t{};
-        for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
-        fe[i][a] = -vol * t;
-      }
+    if (!area) {
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < D; ++i) {
+          Pack t{};
+          for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
+          fe[i][a] = -vol * t;
+        }
+    }
     if constexpr (D == 2) {
-      // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
-      // v_r at the centre = mean of the nodal v_r.
-      if (axi) {
+      if (axi && !area) {
+        // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
+        // v_r at the centre = mean of the nodal v_r.
         const Pack hoop_force = vol * hoop / (N * r_bar);
         for (int a = 0; a < N; ++a) fe[0][a] -= hoop_force;
+      } else if (area) {
+        // Area-weighted momentum (Wilkins 1964): the planar divergence of
+        // sigma over the area, the sources (sigma_rr - sigma_tt) / r and
+        // sigma_rz / r shared equally, and each node's sum scaled by its ring
+        // factor m_a / M_a, so that the acceleration is the area force over
+        // the area mass M_a (q cancels from the r source: it is planar only).
+        const Pack source_r = measure * (sig[0][0] - hoop) / (N * r_bar);
+        const Pack source_z = measure * sig[1][0] / (N * r_bar);
+        for (int a = 0; a < N; ++a) {
+          Pack ring;
+          for (int l = 0; l < W; ++l)
+            ring[l] = ring_factor_[static_cast<std::size_t>(
+                connectivity[lanes.at(l) * N + static_cast<std::size_t>(a)])];
+          for (int i = 0; i < D; ++i) {
+            Pack t{};
+            for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
+            fe[i][a] = ring * (-measure * t + (i == 0 ? source_r : source_z));
+          }
+        }
       }
     }
 

@@ -115,6 +115,20 @@ class FemElements {
   // |v| of the first step's l/(c+|v|) vote, before any kinematics has run.
   void set_speeds(const double* v);
 
+  // r-z only: the momentum in area-weighted form (Wilkins 1964; the default
+  // is the volume form): each node's internal force is the planar
+  // divergence of sigma over the area plus the hoop sources, times its ring
+  // factor m_a / M_a (update_ring_factors), so the acceleration is that force
+  // over the node's area mass M_a. Keeps a spherical flow spherical on rays
+  // from a centre; conserves energy only to the mesh's truncation error
+  // (docs/theory-fem.md, "Axisymmetric momentum").
+  void set_area_weighted_momentum(bool on) { area_weighted_ = on; }
+  bool area_weighted_momentum() const { return area_weighted_; }
+  // The ring factors m_a / M_a from positions x, before this step's forces
+  // (boundary loads use them too); empty unless area-weighted.
+  void update_ring_factors(const double* x);
+  const std::vector<double>& ring_factors() const { return ring_factor_; }
+
   // Element volume (m^3; per unit depth in plane strain, the full ring in
   // axisymmetric mode) of one element at positions x.
   double volume_of(const double* x, std::size_t e) const;
@@ -149,6 +163,8 @@ class FemElements {
   // (added in their order after the loop, so that it too does not depend on the thread count).
   ElementColouring colouring_;
   std::vector<double> pack_stored_;
+  bool area_weighted_ = false;
+  std::vector<double> ring_factor_;  // r-z area-weighted momentum: m_a / M_a per node
 };
 
 extern template class FemElements<2>;

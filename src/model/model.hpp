@@ -47,6 +47,9 @@ struct RunControl {
   // q on the strain rate along the acceleration (Wilkins 1980; true, the default: a smooth
   // convergence takes no q) or on tr D (false, the classic form): docs/theory-fem.md.
   bool viscosity_along_acceleration = true;
+  // r-z momentum in area-weighted form (Wilkins 1964) instead of the volume form
+  // (the default): keeps converging spherical flow spherical; docs/theory-fem.md.
+  bool area_weighted_momentum = false;
   HourglassForm hourglass = HourglassForm::viscous;
   double hourglass_coefficient = 0.1;
   double energy_error_limit = 0.05;  // relative; warn past half, stop when exceeded (solver/energy_guard.hpp)

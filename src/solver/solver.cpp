@@ -44,6 +44,8 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
 
   try {
     elements_ = FemElements<D>(mesh, mode_, position_);
+    elements_.set_area_weighted_momentum(mode_ == GeometryMode::axisymmetric &&
+                                         model.run.area_weighted_momentum);
   } catch (const InputError& e) {  // name the case file the mesh came from
     throw InputError(SourceLocation{model.case_file, 0, 0, "mesh"}, e.message());
   }
@@ -248,7 +250,12 @@ void Solver<D>::add_forces() {
   // The node passes of the previous step zeroed both arrays as they read
   // them for the last time (node_forces_zeroed_); otherwise zero them here.
   if (!node_forces_zeroed_) std::fill(force_.begin(), force_.end(), 0.0);
-  boundaries_.add_loads(position_.data(), time_, force_.data());
+  const double* ring_factor = nullptr;
+  if (elements_.area_weighted_momentum()) {
+    elements_.update_ring_factors(position_.data());
+    ring_factor = elements_.ring_factors().data();
+  }
+  boundaries_.add_loads(position_.data(), time_, force_.data(), ring_factor);
   double* f_hourglass = nullptr;
   if (!hourglass_force_.empty()) {
     hourglass_force_.swap(hourglass_force_previous_);

@@ -20,7 +20,8 @@
 // coasting inwards. The run ends at t = 0.6 s, the shock at R = 0.2 m.
 // The full quarter disc in polar zones (rz_spherical_polar) is kept for
 // diagnosis, not in the suite: its zones next to the centre tangle by
-// t = 0.08 s (docs/theory-fem.md, "Artificial viscosity").
+// t = 0.08 s in the volume form and 0.13 s in the area form (50 zones;
+// docs/theory-fem.md, "Axisymmetric momentum").
 #include <fmt/format.h>
 
 #include <cmath>
@@ -43,6 +44,7 @@ struct NohSpec {
   double quadratic = 1.5;   // artificial viscosity coefficients
   double linear = 0.06;
   bool along_acceleration = true;  // [run.viscosity] form = "acceleration"
+  bool area_momentum = false;      // [run] axisymmetric_momentum = "area" (r-z only)
   double end_time = 0.6;    // s
   std::int64_t max_cycles = 20000;
 };
@@ -72,6 +74,7 @@ inline NohResult run_noh(const NohSpec& spec) {
   model.run.viscosity_quadratic = spec.quadratic;
   model.run.viscosity_linear = spec.linear;
   model.run.viscosity_along_acceleration = spec.along_acceleration;
+  model.run.area_weighted_momentum = spec.area_momentum;
   model.run.end_time = spec.end_time;
   model.run.cfl = 0.5;
   model.materials.push_back(

@@ -75,17 +75,19 @@ struct MaterialPoints {
   double stable_wave_speed(std::size_t i) const;
 };
 
-// Inline: the solver gathers it for every element each cycle.
-inline double MaterialPoints::wave_speed(std::size_t i) const {
-  const double c = sound_speed[i];
-  const double g = density[i] > 0.0 ? 4.0 * shear_modulus[i] / (3.0 * density[i]) : 0.0;
+// Inline: the solver gathers them for every element each cycle.
+// sqrt(c^2 + 4G/(3 rho)) for a bulk sound speed c at point i.
+inline double longitudinal_wave_speed(const MaterialPoints& pts, std::size_t i, double c) {
+  const double g = pts.density[i] > 0.0 ? 4.0 * pts.shear_modulus[i] / (3.0 * pts.density[i]) : 0.0;
   return std::sqrt(c * c + g);
 }
 
+inline double MaterialPoints::wave_speed(std::size_t i) const {
+  return longitudinal_wave_speed(*this, i, sound_speed[i]);
+}
+
 inline double MaterialPoints::stable_wave_speed(std::size_t i) const {
-  const double c = std::max(sound_speed[i], stable_sound_speed[i]);
-  const double g = density[i] > 0.0 ? 4.0 * shear_modulus[i] / (3.0 * density[i]) : 0.0;
-  return std::sqrt(c * c + g);
+  return longitudinal_wave_speed(*this, i, std::max(sound_speed[i], stable_sound_speed[i]));
 }
 
 }  // namespace camouflet

@@ -234,6 +234,34 @@ void fill_sph_parts(std::vector<PendingFill>& pending, Model& model) {
   }
 }
 
+// `geostatic = { surface = ..., k0 = 0.5 | "jaky", surcharge = ... }` of a FEM part: its initial
+// stress from the overburden under [run] gravity (docs/case-format.md, docs/theory/gravity.md).
+GeostaticState read_part_geostatic(TomlReader& t, const Model& model, const Part& part) {
+  GeostaticState geo;
+  geo.where = t.where();
+  if (!model.run.has_gravity())
+    t.fail("surface", "a geostatic state needs [run] gravity = [...] (m/s^2), which is not set");
+  geo.surface = t.number("surface");
+  geo.surcharge = t.non_negative("surcharge", 0.0);
+  if (!t.has("k0")) t.fail("k0", "missing: a number (sigma_h / sigma_v) or \"jaky\" (1 - sin(phi))");
+  const toml::node* k0 = t.node("k0");
+  if (k0->is_string()) {
+    const std::string word = t.string("k0");
+    if (word != "jaky") t.fail("k0", fmt::format("expected a number or \"jaky\", got \"{}\"", word));
+    const NamedMaterial& material = model.materials[static_cast<std::size_t>(part.material)];
+    const StrengthModel* strength = material.material->strength();
+    if (!strength || !strength->friction_angle())
+      t.fail("k0", fmt::format("\"jaky\" takes K0 = 1 - sin(phi) from the friction angle, and material '{}' "
+                               "({}) has none; give k0 as a number",
+                               material.name, strength ? strength->type() : "no strength"));
+  } else {
+    geo.k0 = t.number("k0");
+    if (!(*geo.k0 >= 0.0)) t.fail("k0", fmt::format("must not be negative, got {}", *geo.k0));
+  }
+  t.finish();
+  return geo;
+}
+
 }  // namespace
 
 void read_parts(TomlReader& root, Model& model, const std::filesystem::path& case_dir) {
@@ -256,8 +284,11 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     part.initial_velocity = p.vector("initial_velocity", dim, {0, 0, 0});
     if (part.kind == PartKind::fem) {
       if (auto h = p.table("hourglass")) part.hourglass = read_part_hourglass(*h);
+      if (auto geo = p.table("geostatic")) part.geostatic = read_part_geostatic(*geo, model, part);
     } else if (p.has("hourglass")) {
       p.fail("hourglass", "only a FEM part has hourglass control (SPH particles have no hourglass modes)");
+    } else if (p.has("geostatic")) {
+      p.fail("geostatic", "a geostatic initial state is set on FEM parts only");
     }
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);

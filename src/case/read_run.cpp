@@ -42,6 +42,14 @@ void read_run(TomlReader& r, Model& model) {
     if (!(run.domain_min[static_cast<std::size_t>(i)] < run.domain_max[static_cast<std::size_t>(i)]))
       r.fail("domain_max", fmt::format("component {} must exceed domain_min's", i + 1));
 
+  if (r.has("gravity")) {
+    run.gravity = r.vector("gravity", dim);
+    // On the axis of revolution a radial body force has no meaning: it would pull the rings apart.
+    if (run.mode == GeometryMode::axisymmetric && run.gravity[0] != 0.0)
+      r.fail("gravity", fmt::format("an r-z model takes gravity along z only; got a radial component {} m/s^2",
+                                    run.gravity[0]));
+  }
+
   if (auto v = r.table("viscosity")) {
     run.viscosity_linear = v->non_negative("linear", run.viscosity_linear);
     run.viscosity_quadratic = v->non_negative("quadratic", run.viscosity_quadratic);

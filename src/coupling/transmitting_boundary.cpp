@@ -72,12 +72,7 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
                                      const FemElements<D>& elements,
                                      const std::vector<MaterialPoints>& batches, double dt) {
   constexpr int F = D == 2 ? 2 : 4;
-  if (nodes_.empty()) {
-    for (const Face& face : faces_) nodes_.insert(nodes_.end(), face.nodes.begin(), face.nodes.end());
-    std::sort(nodes_.begin(), nodes_.end());
-    nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
-    damping_.resize(nodes_.size());
-  }
+  if (nodes_.empty()) collect_nodes();
   for (auto& c : damping_) c.fill(0.0);
   for (const Face& face : faces_) {
     const MaterialPoints& pts = batches[static_cast<std::size_t>(elements.material[face.element])];
@@ -173,6 +168,36 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
       v[node * D + i] = sol[i];
     }
   }
+  return work;
+}
+
+template <int D>
+void TransmittingBoundary<D>::collect_nodes() {
+  for (const Face& face : faces_) nodes_.insert(nodes_.end(), face.nodes.begin(), face.nodes.end());
+  std::sort(nodes_.begin(), nodes_.end());
+  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  damping_.resize(nodes_.size());
+}
+
+template <int D>
+void TransmittingBoundary<D>::hold_initial_state(const double* unbalanced) {
+  if (nodes_.empty()) collect_nodes();
+  // The removed soil's traction sigma . n A on the face, lumped to the nodes as the element
+  // forces are: taken as the nodal residual, it also carries the boundary half-elements' weight.
+  static_force_.assign(nodes_.size(), {});
+  for (std::size_t k = 0; k < nodes_.size(); ++k)
+    for (int i = 0; i < D; ++i) static_force_[k][static_cast<std::size_t>(i)] = -unbalanced[nodes_[k] * D + i];
+}
+
+template <int D>
+double TransmittingBoundary<D>::add_static_forces(const double* v_old, double dt_old, double* f) const {
+  double work = 0.0;
+  for (std::size_t k = 0; k < static_force_.size(); ++k)
+    for (int i = 0; i < D; ++i) {
+      const double fi = static_force_[k][static_cast<std::size_t>(i)];
+      f[nodes_[k] * D + i] += fi;
+      work += fi * v_old[nodes_[k] * D + i] * dt_old;
+    }
   return work;
 }
 

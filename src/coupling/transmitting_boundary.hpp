@@ -12,6 +12,10 @@
 // below 1 on the boundary element. The dissipated work enters the energy
 // balance as boundary work, centred like the load work (boundary_conditions.hpp).
 // docs/theory/coupling.md gives the limits (oblique incidence).
+// Under gravity the boundary also carries the static load of the soil it
+// replaces: a constant nodal force, fixed at t = 0, equal to the reaction that
+// holds each boundary node in the initial (geostatic) state; the dashpots act on
+// the motion only (docs/theory/gravity.md).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -41,6 +45,13 @@ class TransmittingBoundary {
   double damp(const double* x, const double* v_old, double* v, const double* node_mass,
               const FemElements<D>& elements, const std::vector<MaterialPoints>& batches, double dt);
 
+  // At t = 0: `unbalanced` (n*D, N) is each node's internal force plus its weight in the initial
+  // state; the boundary nodes keep -unbalanced as their static force from then on.
+  void hold_initial_state(const double* unbalanced);
+  // Adds the static forces to f (n*D) at t_n and returns their work from t_(n-1) to t_n,
+  // f . v(n-1/2) dt(n-1/2) (J; constant forces: exact).
+  double add_static_forces(const double* v_old, double dt_old, double* f) const;
+
  private:
   struct Face {
     std::array<std::int64_t, D == 2 ? 2 : 4> nodes;
@@ -49,6 +60,8 @@ class TransmittingBoundary {
   std::vector<Face> faces_;
   std::vector<std::int64_t> nodes_;                 // boundary nodes, sorted
   std::vector<std::array<double, D * D>> damping_;  // N s/m, per entry of nodes_
+  std::vector<std::array<double, D>> static_force_;  // N, per entry of nodes_ (empty: none)
+  void collect_nodes();
   bool axisymmetric_ = false;
 };
 

@@ -6,6 +6,7 @@
 // integration points, SPH particles and the material-point driver.
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -60,6 +61,9 @@ class StrengthModel {
   // plastic_strain_rate, shear_modulus (and temperature, damage where the
   // model owns them) are updated.
   virtual void update(MaterialPoints& pts, const MaterialContext& ctx) const = 0;
+  // Friction angle phi (rad) of a frictional strength, for Jaky's K0 = 1 - sin(phi) of a
+  // geostatic initial state; none for a strength without friction.
+  virtual std::optional<double> friction_angle() const { return std::nullopt; }
 };
 
 class DamageModel {

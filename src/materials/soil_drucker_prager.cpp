@@ -16,6 +16,15 @@ double SoilDruckerPrager::yield_limit(double pressure, double effective_strain_r
   return std::max(0.0, static_limit * rate_factor);                                               // eq. 21
 }
 
+std::optional<double> SoilDruckerPrager::friction_angle() const {
+  if (!(p_.friction_slope > 0.0)) return std::nullopt;
+  const double a = std::sqrt(3.0) * p_.friction_slope;
+  const double sin_phi = 3.0 * a / (2.0 + a);
+  // alpha >= 1/sqrt(3) has no Mohr-Coulomb angle: the cone would open past phi = 90 degrees.
+  if (!(sin_phi < 1.0)) return std::nullopt;
+  return std::asin(sin_phi);
+}
+
 void SoilDruckerPrager::initialise(MaterialPoints& pts) const {
   std::fill(pts.shear_modulus.begin(), pts.shear_modulus.end(), p_.shear_modulus);
 }

@@ -34,6 +34,9 @@ class SoilDruckerPrager final : public StrengthModel {
   // Yield limit sqrt(J2) of eq. 21 at pressure p (Pa), effective strain rate (1/s) and damage.
   double yield_limit(double pressure, double effective_strain_rate, double damage) const;
   const SoilDruckerPragerParameters& parameters() const { return p_; }
+  // The Mohr-Coulomb angle whose triaxial-compression meridian the cone matches:
+  // alpha = 2 sin(phi) / (sqrt(3) (3 - sin(phi))), so sin(phi) = 3 sqrt(3) alpha / (2 + sqrt(3) alpha).
+  std::optional<double> friction_angle() const override;
 
  private:
   SoilDruckerPragerParameters p_;

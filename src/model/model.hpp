@@ -52,6 +52,10 @@ struct RunControl {
   bool area_weighted_momentum = false;
   HourglassForm hourglass = HourglassForm::viscous;
   double hourglass_coefficient = 0.1;
+  // Gravitational acceleration (m/s^2; axisymmetric: (r, z), only along z): a body force m g on
+  // every node and particle, its work booked in the energy balance (docs/theory/gravity.md).
+  std::array<double, 3> gravity{};
+  bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0; }
   double energy_error_limit = 0.05;  // relative; warn past half, stop when exceeded (solver/energy_guard.hpp)
   // Domain box (m; axisymmetric r, z): a node or particle leaving it stops the run. Unbounded by default.
   std::array<double, 3> domain_min{-std::numeric_limits<double>::infinity(),
@@ -105,6 +109,16 @@ struct ParticleSet {
 
 enum class PartKind { fem, sph };
 
+// The geostatic initial state of a soil part (a part's `geostatic` key; docs/theory/gravity.md):
+// vertical stress from the overburden of the part itself below `surface` plus `surcharge`,
+// horizontal stress k0 times the vertical one. "Vertical" is the direction of [run] gravity.
+struct GeostaticState {
+  double surface = 0.0;           // m, elevation of the part's top along -gravity
+  std::optional<double> k0;       // lateral earth-pressure coefficient; none: Jaky, 1 - sin(phi)
+  double surcharge = 0.0;         // Pa, vertical stress at `surface` (the weight of the layers above)
+  SourceLocation where;
+};
+
 struct Part {
   std::string name;
   PartKind kind = PartKind::fem;
@@ -113,6 +127,7 @@ struct Part {
   SourceLocation where;
   // The part's own hourglass control (FEM parts); none: the run's [run.hourglass].
   std::optional<HourglassControl> hourglass;
+  std::optional<GeostaticState> geostatic;  // FEM parts: initial stress from the overburden
 };
 
 struct NamedMaterial {

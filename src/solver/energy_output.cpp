@@ -20,7 +20,7 @@ void EnergyCsv<D>::start(const Solver<D>& solver) {
       path_, std::vector<std::string>{"energy"},
       std::vector<std::string>{"kinetic", "internal", "hourglass", "eroded", "viscous", "boundary_work",
                                "transmitting", "constraints", "join", "join_face", "contact", "sph_kinetic",
-                               "sph_internal", "bar_internal", "residual", "relative_error"});
+                               "sph_internal", "bar_internal", "gravity", "residual", "relative_error"});
   next_ = 0.0;
   after_cycle(solver);
 }
@@ -45,7 +45,7 @@ void EnergyCsv<D>::after_cycle(const Solver<D>& solver) {
   const double residual = e.kinetic + e.internal + e.hourglass + e.eroded - e.initial_total - e.boundary_work;
   row_.assign({e.kinetic, e.internal, e.hourglass, e.eroded, e.viscous, e.boundary_work, s.transmitting,
                s.constraints, s.join, s.join_face, s.contact, s.sph_kinetic, s.sph_internal, s.bar_internal,
-               residual, e.relative_error});
+               s.gravity, residual, e.relative_error});
   csv_->write_row(time, row_);
 }
 

@@ -73,6 +73,7 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
     mat.setup(batches_[m], count[m]);
     mat.eos().place(batches_[m], centres[m], model.detonations);
   }
+  set_geostatic_state();  // before the masses: they follow from the density that carries the overburden
 
   // Masses and initial velocities (mass-weighted where parts meet).
   std::vector<double> momentum(nn * D, 0.0);
@@ -146,6 +147,7 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   // (the kinematics that measure |v| have not run yet).
   elements_.set_speeds(velocity_.data());
   gather_element_state();
+  hold_transmitting_boundaries();  // needs the initial stresses gathered above
   start_energy_and_step();
 }
 
@@ -270,6 +272,7 @@ void Solver<D>::add_forces() {
   if (particles_ && !contact_.empty())
     contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(),
                                     0.5 * (dt_ + dt_next_));
+  add_gravity();  // after the particle sums, which set the particles' accelerations
 }
 
 template <int D>

@@ -71,6 +71,7 @@ class Solver {
     double sph_kinetic = 0.0;   // J, part of EnergyBalance::kinetic held by particles
     double sph_internal = 0.0;  // J, part of EnergyBalance::internal held by particles
     double bar_internal = 0.0;  // J, part of EnergyBalance::internal held by embedded bars
+    double gravity = 0.0;       // J, work of gravity (the potential energy given up; solver/gravity.cpp)
   };
   const EnergySplit& energy_split() const { return split_; }
   FieldSnapshot snapshot() const;
@@ -98,6 +99,9 @@ class Solver {
  private:
   // Stages of step(), in order.
   void add_forces();
+  void add_gravity();  // the body force m g and its work (solver/gravity.cpp)
+  void hold_transmitting_boundaries();  // their static load under gravity, at t = 0 (gravity.cpp)
+  void set_geostatic_state();  // initial stress, density and compaction of geostatic parts (geostatic_state.cpp)
   void advance_velocities();
   void constrain_velocities();
   void account_energy_and_advance_positions();

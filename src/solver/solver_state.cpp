@@ -37,6 +37,7 @@ void Solver<D>::visit_state(StateVisitor& v) {
   visit(v, "energy_split.sph_kinetic", split_.sph_kinetic);
   visit(v, "energy_split.sph_internal", split_.sph_internal);
   visit(v, "energy_split.bar_internal", split_.bar_internal);
+  visit(v, "energy_split.gravity", split_.gravity);
   visit(v, "eroded_count", eroded_count_);
   visit(v, "join_power", join_power_);
   visit(v, "contact_power", contact_power_);

@@ -1,0 +1,67 @@
+// Gravity: the body force m g on every node and particle, and the static load that transmitting
+// boundaries carry under it (docs/theory/gravity.md).
+#include <cstddef>
+#include <cstdint>
+
+#include "fem/parallel.hpp"
+#include "solver/solver.hpp"
+
+namespace camouflet {
+
+template <int D>
+void Solver<D>::add_gravity() {
+  if (!model_.run.has_gravity()) return;
+  const std::array<double, 3>& g = model_.run.gravity;
+  // The work of the constant force over the step t_(n-1) -> t_n is m g . v(n-1/2) dt(n-1/2),
+  // exactly m g . (x_n - x_(n-1)): the booked work is the loss of potential energy, the form the
+  // central difference's kinetic energy at t_n balances. velocity_ still holds v(n-1/2) here.
+  const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
+  double power = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : power) if (nn > parallel_threshold_nodes)
+  for (std::int64_t n = 0; n < nn; ++n) {
+    const double m = node_mass_[static_cast<std::size_t>(n)];
+    for (int i = 0; i < D; ++i) {
+      const std::size_t k = static_cast<std::size_t>(n * D + i);
+      force_[k] += m * g[static_cast<std::size_t>(i)];
+      power += m * g[static_cast<std::size_t>(i)] * velocity_[k];
+    }
+  }
+  if (particles_) {
+    sph::ParticleArrays<D>& p = particles_->particles();
+    for (std::size_t k = 0; k < p.real; ++k)
+      for (int i = 0; i < D; ++i) {
+        p.acceleration[k][i] += g[static_cast<std::size_t>(i)];
+        power += p.mass[k] * g[static_cast<std::size_t>(i)] * p.velocity[k][i];
+      }
+  }
+  const double work = power * dt_;
+  energy_.boundary_work += work;
+  split_.gravity += work;
+  // The static load the transmitting boundaries carry (hold_transmitting_boundaries).
+  if (!transmitting_.empty()) {
+    const double static_work = transmitting_.add_static_forces(velocity_.data(), dt_, force_.data());
+    energy_.boundary_work += static_work;
+    split_.transmitting += static_work;
+  }
+}
+
+template <int D>
+void Solver<D>::hold_transmitting_boundaries() {
+  if (!model_.run.has_gravity() || transmitting_.empty()) return;
+  // Each node's internal force plus its weight in the initial state: what the soil beyond a
+  // transmitting boundary held, which the boundary now holds in its place.
+  std::vector<double> unbalanced(position_.size(), 0.0);
+  elements_.add_internal_forces(position_.data(), velocity_.data(), unbalanced.data(), nullptr, hourglass_, 0.0);
+  const std::array<double, 3>& g = model_.run.gravity;
+  for (std::size_t n = 0; n < node_mass_.size(); ++n)
+    for (int i = 0; i < D; ++i)
+      unbalanced[n * D + static_cast<std::size_t>(i)] += node_mass_[n] * g[static_cast<std::size_t>(i)];
+  transmitting_.hold_initial_state(unbalanced.data());
+}
+
+template void Solver<2>::add_gravity();
+template void Solver<3>::add_gravity();
+template void Solver<2>::hold_transmitting_boundaries();
+template void Solver<3>::hold_transmitting_boundaries();
+
+}  // namespace camouflet

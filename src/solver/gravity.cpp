@@ -51,6 +51,7 @@ void Solver<D>::hold_transmitting_boundaries() {
   // Each node's internal force plus its weight in the initial state: what the soil beyond a
   // transmitting boundary held, which the boundary now holds in its place.
   std::vector<double> unbalanced(position_.size(), 0.0);
+  if (elements_.area_weighted_momentum()) elements_.update_ring_factors(position_.data());
   elements_.add_internal_forces(position_.data(), velocity_.data(), unbalanced.data(), nullptr, hourglass_, 0.0);
   const std::array<double, 3>& g = model_.run.gravity;
   for (std::size_t n = 0; n < node_mass_.size(); ++n)

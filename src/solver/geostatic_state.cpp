@@ -159,13 +159,11 @@ void Solver<D>::set_geostatic_state() {
         if (!active[m][p]) continue;
         const SymTensor& a = before[p];
         const SymTensor& b = pts.deviator[p];
-        const double asked_j2 = std::sqrt(0.5 * (a.xx * a.xx + a.yy * a.yy + a.zz * a.zz) + a.xy * a.xy +
-                                          a.yz * a.yz + a.zx * a.zx);
+        const double asked_j2 = std::sqrt(j2(a));
         const double moved = std::abs(a.xx - b.xx) + std::abs(a.yy - b.yy) + std::abs(a.zz - b.zz) +
                              std::abs(a.xy - b.xy) + std::abs(a.yz - b.yz) + std::abs(a.zx - b.zx);
         if (moved <= 1e-9 * (asked_j2 + 1.0)) continue;
-        const double limit_j2 = std::sqrt(0.5 * (b.xx * b.xx + b.yy * b.yy + b.zz * b.zz) + b.xy * b.xy +
-                                          b.yz * b.yz + b.zx * b.zx);
+        const double limit_j2 = std::sqrt(j2(b));
         const Part& part = model.parts[part_of[m][p]];
         throw InputError(part.geostatic->where,
                          fmt::format("part '{}': the geostatic K0 state at depth {:.6g} m lies outside the "

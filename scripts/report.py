@@ -25,14 +25,25 @@ import numpy as np  # noqa: E402
 # The headline quantities have one definition, shared with `camouflet sweep`.
 from run_metrics import (F_COUPLING, G, band_ratio, crater, deflections, empirical_averages,  # noqa: E402
                          empirical_range, final_displacements, gauge_names, generator_parameters,
-                         ground_shock_peaks, in_structure_peaks, radial_stress, read_csv, structure_damage,
-                         tm5_functions)
+                         ground_shock_peaks, in_structure_peaks, last_snapshots, radial_stress, read_csv,
+                         structure_damage, tm5_functions)
+from damage_map import damage_map  # noqa: E402
 from structure_shock import lowpass, shock_response_spectrum  # noqa: E402
 
 # In-structure accelerations are shown raw and low-passed at this cut-off (zero-phase,
 # -3 dB here; about SAE J211's CFC 600), and their shock spectra use this damping.
 CUTOFF_HZ = 1000.0
 SRS_DAMPING = 0.05
+MEMBER_ORDER = ["front wall", "roof", "floor", "back wall"]
+# energy.csv's terms (solver/energy_output.hpp) in words; the shares are parts of the term above them.
+ENERGY_NAMES = {"join_face": "join, via the centre-face offset", "viscous": "viscous heating (in internal)",
+                "sph_kinetic": "kinetic, SPH particles' share", "sph_internal": "internal, SPH particles' share",
+                "bar_internal": "internal, rebar's share", "boundary_work": "boundary work",
+                "initial_total": "initial total"}
+
+
+def energy_name(term):
+    return ENERGY_NAMES.get(term, term)
 
 
 def uniform(t, x):
@@ -72,7 +83,8 @@ def speed(cols, g):
 
 
 def save(fig, outdir, name):
-    fig.tight_layout()
+    if fig.get_layout_engine() is None:  # a figure that chose its layout keeps it
+        fig.tight_layout()
     path = os.path.join(outdir, name)
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -96,8 +108,9 @@ def main():
     w3 = W ** (1.0 / 3.0)
     figdir = os.path.join(out, "report")
     os.makedirs(figdir, exist_ok=True)
-    figures = []  # (file, caption)
-    tables = []  # html snippets
+    # The page in reading order: a figure ((file, caption)) sits under the heading and beside the table
+    # (html text) of its subject, not in a gallery after all tables.
+    blocks = []
     plt.rcParams.update({"figure.figsize": (7.5, 4.6), "axes.grid": True, "grid.alpha": 0.3, "font.size": 10})
 
     groups = {}
@@ -109,6 +122,7 @@ def main():
     # Fig. 8b: peak stress against scaled distance with TM-5 Functions 1 and 2.
     peaks = {}
     if groups:
+        blocks.append("<h2>Ground shock</h2>")
         fig, ax = plt.subplots()
         Zs = np.geomspace(0.2, 3.0, 100)
         f1, f2 = tm5_functions(Zs)
@@ -124,18 +138,19 @@ def main():
         ax.set_ylabel("peak radial stress [MPa]")
         ax.set_title(f"Attenuation of peak stress, {W:g} kg TNT at {d:g} m (cf. Fig. 8b), f = {F_COUPLING}")
         ax.legend(fontsize=8)
-        figures.append((save(fig, figdir, "fig08b_peak_stress.png"),
-                        "Peak radial stress against scaled distance: group A (parallel to the ground at the charge "
-                        "depth) and group B (45° line down), with the TM 5-855-1 Functions 1 and 2 (f = 0.6)."))
+        blocks.append((save(fig, figdir, "fig08b_peak_stress.png"),
+                       "Peak radial stress against scaled distance: group A (parallel to the ground at the charge "
+                       "depth) and group B (45° line down), with the TM 5-855-1 Functions 1 and 2 (f = 0.6)."))
         rows = []
         for name, (Z, P) in peaks.items():
             lo, hi = tm5_functions(Z)
             for z, p, a, b in zip(Z, P, lo, hi):
                 inside = band_ratio(z, p) == 1.0
                 rows.append(f"<tr><td>{name[-1]}</td><td>{z:.3f}</td><td>{z * w3:.2f}</td><td>{p:.3g}</td>"
-                            f"<td>{a:.3g} – {b:.3g}</td><td>{'yes' if inside else 'no'}</td></tr>")
-        tables.append("<h2>Peak stresses against TM-5</h2><table><tr><th>group</th><th>Z [m/kg<sup>1/3</sup>]</th>"
-                      "<th>R [m]</th><th>peak [MPa]</th><th>Function 1 – 2 [MPa]</th><th>within ×1.5</th></tr>" +
+                            f"<td>{a:.3g} / {b:.3g}</td><td>{'yes' if inside else 'no'}</td></tr>")
+        blocks.append("<h3>Peak stresses against TM-5</h3><table><tr><th>group</th><th>Z [m/kg<sup>1/3</sup>]</th>"
+                      "<th>R [m]</th><th>peak [MPa]</th><th>TM-5 Function 1 / Function 2 [MPa]</th>"
+                      "<th>within the band widened by ×1.5</th></tr>" +
                       "".join(rows) + "</table>")
 
     # Fig. 9: stress and velocity histories at equal distance (the A/B pair nearest 4 m).
@@ -164,11 +179,12 @@ def main():
                 ax.set_xlabel("time [ms]")
                 ax.legend()
             fig.suptitle(f"Histories at {best[2]:.2f} m from the charge (cf. Fig. 9)")
-            figures.append((save(fig, figdir, "fig09_histories.png"),
-                            f"Stress and velocity histories at the same range ({best[2]:.2f} m) in group A and group B."))
+            blocks.append((save(fig, figdir, "fig09_histories.png"),
+                           f"Stress and velocity histories at the same range ({best[2]:.2f} m) in group A and group B."))
 
     spath = os.path.join(out, "structure.csv")
     if os.path.exists(spath):
+        blocks.append("<h2>Structure response</h2>")
         t, c = read_csv(spath)
         ms = t * 1e3
         has = lambda g: g + ".velocity_x" in c  # noqa: E731
@@ -181,8 +197,8 @@ def main():
             ax.set_ylabel("stress [MPa, compression +]")
             ax.set_title("Interface stress at target 9, front wall mid-height (cf. Fig. 11)")
             ax.legend()
-            figures.append((save(fig, figdir, "fig11_interface_stress.png"),
-                            "Soil stress at the soil–structure interface at the front wall's mid-height (target 9)."))
+            blocks.append((save(fig, figdir, "fig11_interface_stress.png"),
+                           "Soil stress at the soil–structure interface at the front wall's mid-height (target 9)."))
         # Fig. 12: displacements of the front wall and deflections.
         if all(has(g) for g in ("t1", "t2", "t3", "t5", "t6")):
             fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -200,11 +216,11 @@ def main():
                 ax.set_xlabel("time [ms]")
                 ax.legend(fontsize=8)
             fig.suptitle("Displacements and deflections (cf. Fig. 12)")
-            figures.append((save(fig, figdir, "fig12_displacements.png"),
-                            f"Front-wall displacements and deflections. Peak front-wall deflection "
-                            f"{np.nanmax(np.abs(wall)) * 1e3:.2f} mm ({np.nanmax(np.abs(wall)) / height * 100:.3f} % of "
-                            f"the height); floor {np.nanmax(np.abs(floor)) * 1e3:.2f} mm "
-                            f"({np.nanmax(np.abs(floor)) / length * 100:.3f} % of the length)."))
+            blocks.append((save(fig, figdir, "fig12_displacements.png"),
+                           f"Front-wall displacements and deflections. Peak front-wall deflection "
+                           f"{np.nanmax(np.abs(wall)) * 1e3:.2f} mm ({np.nanmax(np.abs(wall)) / height * 100:.3f} % of "
+                           f"the height); floor {np.nanmax(np.abs(floor)) * 1e3:.2f} mm "
+                           f"({np.nanmax(np.abs(floor)) / length * 100:.3f} % of the length)."))
         # Figs. 15-16: velocity and acceleration of the front wall and the floor.
         sets = (("front wall", ("t1", "t2", "t3"), "x", "horizontal", "fig15_front_wall.png", "Fig. 15"),
                 ("floor", ("t3", "t4", "t5"), "y", "vertical", "fig16_floor.png", "Fig. 16"))
@@ -217,24 +233,34 @@ def main():
             for k, g in enumerate(gs):
                 axes[0].plot(ms, c[f"{g}.velocity_{axis}"], label=g)
                 a = c[f"{g}.acceleration_{axis}"]
-                axes[1].plot(ms, a / G, color=f"C{k}", lw=0.5, alpha=0.35)
+                # Raw in grey behind: one colour per target made a solid band that hid the low-passed lines.
+                axes[1].plot(ms, a / G, color="0.55", lw=0.4, alpha=0.3, zorder=1,
+                             label="raw gauges" if k == 0 else None)
                 lp = filtered_acceleration(t, c[f"{g}.velocity_{axis}"])
                 if lp:
-                    axes[1].plot(lp[0] * 1e3, lp[1] / G, color=f"C{k}", lw=1.2, label=f"{g}, {CUTOFF_HZ:g} Hz")
+                    axes[1].plot(lp[0] * 1e3, lp[1] / G, color=f"C{k}", lw=1.2, zorder=2,
+                                 label=f"{g}, {CUTOFF_HZ:g} Hz")
                     filtered_peaks.setdefault(title, []).append(np.max(np.abs(lp[1])) / G)
                     if g == gs[1]:
                         srs_inputs[title] = (g, axis, lp)
             axes[0].set_ylabel(f"{word} velocity [m/s]")
             axes[1].set_ylabel(f"{word} acceleration [g]")
+            clipped = ""
+            if title in filtered_peaks:
+                # The raw trace is aliased noise about ten times the low-passed peak; on its scale the
+                # low-passed trace, the one to read, is a flat line.
+                top = 1.5 * max(filtered_peaks[title])
+                axes[1].set_ylim(-top, top)
+                clipped = " (clipped to the axis; its peaks are in the table)"
             for ax in axes:
                 ax.set_xlabel("time [ms]")
                 ax.legend()
             fig.suptitle(f"{title.capitalize()}: {word} velocity and acceleration (cf. {ref})")
-            figures.append((save(fig, figdir, fname),
-                            f"{title.capitalize()} {word} velocity and acceleration. Faint: the raw acceleration "
-                            f"gauge (one cycle's nodal value per sample, aliased). Bold: the velocity's difference "
-                            f"quotient low-passed at {CUTOFF_HZ:g} Hz (zero-phase Butterworth, -3 dB at the "
-                            f"cut-off; scripts/structure_shock.py)."))
+            blocks.append((save(fig, figdir, fname),
+                           f"{title.capitalize()} {word} velocity and acceleration. Grey: the raw acceleration "
+                           f"gauges (one cycle's nodal value per sample, aliased){clipped}. Bold: the velocity's "
+                           f"difference quotient low-passed at {CUTOFF_HZ:g} Hz (zero-phase Butterworth, -3 dB at "
+                           f"the cut-off; scripts/structure_shock.py)."))
         # Member averages (members.csv): the span's rigid-body motion, raw and low-passed.
         member_rows = {}
         mpath = os.path.join(out, "members.csv")
@@ -269,11 +295,11 @@ def main():
             ax.set_ylabel("pseudo-velocity [m/s]")
             ax.set_title(f"Shock response spectra, {SRS_DAMPING * 100:g} % damping (low-passed at {CUTOFF_HZ:g} Hz)")
             ax.legend(fontsize=8)
-            figures.append((save(fig, figdir, "srs_structure.png"),
-                            "Pseudo-velocity shock response spectra (maximax) of the low-passed base motion: "
-                            "the front wall's and the floor's member averages (solid) and their mid-span targets "
-                            "(dashed). Dotted grey: constant acceleration "
-                            "1, 10, 100, 1000 g; dashed grey: constant displacement 0.1, 1, 10, 100 mm."))
+            blocks.append((save(fig, figdir, "srs_structure.png"),
+                           "Pseudo-velocity shock response spectra (maximax) of the low-passed base motion: "
+                           "the front wall's and the floor's member averages (solid) and their mid-span targets "
+                           "(dashed). Dotted grey: constant acceleration "
+                           "1, 10, 100, 1000 g; dashed grey: constant displacement 0.1, 1, 10, 100 mm."))
         avg = empirical_averages(args.camouflet, W, standoff, standoff + length)
         if measured:
             rows = []
@@ -290,8 +316,8 @@ def main():
                 rows.append(f"<tr><td>{title} ({word}), member average</td><td>{vmax:.3g}</td>"
                             f"<td>{v_lo:.3g} – {v_hi:.3g}</td><td>{'yes' if ok else 'no'}</td><td></td>"
                             f"<td>{af:.4g}</td><td>{a_lo:.4g} – {a_hi:.4g}</td></tr>")
-            tables.append(
-                "<h2>In-structure shock against TM-5 averages</h2>"
+            blocks.append(
+                "<h3>In-structure shock against TM-5 averages</h3>"
                 f"<p>TM-5 averages over R = {standoff:g} … {standoff + length:g} m from "
                 "<code>camouflet empirical --csv</code> (n = 2.5 and 2, f = 0.6). The criterion is "
                 "0.5 × the lower to 2 × the upper average. Peaks of the largest of the member's three "
@@ -310,19 +336,31 @@ def main():
     dmg = structure_damage(out, gen)
     if dmg:
         rows.append(f"<tr><td>largest damage in the box</td><td>{dmg['max']:.3g} ({dmg['member']})</td></tr>")
-        rows += [f"<tr><td>mean damage, {m}</td><td>{v:.3g}</td></tr>" for m, v in sorted(dmg["mean"].items())]
+        lower, upper = dmg["front_wall_halves"]
+        # The members in the order the load meets them, the front wall's halves under it (Fig. 14's finding).
+        for m in sorted(dmg["mean"], key=lambda m: (MEMBER_ORDER + [m]).index(m)):
+            rows.append(f"<tr><td>mean damage, {m}</td><td>{dmg['mean'][m]:.3g}</td></tr>")
+            if m == "front wall":
+                rows.append(f"<tr><td>&emsp;lower half (facing the charge) / upper half</td>"
+                            f"<td>{lower:.3g} / {upper:.3g}</td></tr>")
     cr = crater(out, gen)
     if cr:
         rows.append(f"<tr><td>apparent crater radius / depth</td><td>{cr[0]:.3g} m / {cr[1]:.3g} m</td></tr>")
     if rows:
-        tables.append("<h2>Permanent displacement, damage and crater</h2><p>At the last snapshot; definitions in "
-                      "<code>scripts/run_metrics.py</code> (docs/buried-structure.md).</p><table>" + "".join(rows) +
-                      "</table>")
+        files, t_last = last_snapshots(out)
+        when = f" (t = {t_last * 1e3:.1f} ms)" if t_last is not None else ""
+        blocks.append("<h2>Permanent displacement, damage and crater</h2><p>At the last snapshot" + when +
+                      "; damage D is 0 intact to 1 fully damaged. Definitions in <code>scripts/run_metrics.py</code> "
+                      "(docs/buried-structure.md).</p><table>" + "".join(rows) + "</table>")
+    if dmg:
+        fig, caption = damage_map(dmg["section"], (lower, upper))
+        blocks.append((save(fig, figdir, "fig14_damage.png"), caption))
 
     # Fig. 13: rebar strain at the rebar gauges In-1..3 / Out-1..3 (bars.csv; the case header names the segments).
     bpath = os.path.join(out, "bars.csv")
     rebar = rebar_gauges(os.path.join(out, "case.toml"))
     if os.path.exists(bpath) and rebar:
+        blocks.append("<h2>Reinforcement</h2>")
         t, c = read_csv(bpath)
         fig, ax = plt.subplots()
         rows = []
@@ -337,14 +375,16 @@ def main():
         ax.set_ylabel("axial strain [µε, tension +]")
         ax.set_title("Rebar strain in the front wall (cf. Fig. 13)")
         ax.legend(fontsize=8)
-        figures.append((save(fig, figdir, "fig13_rebar_strain.png"),
-                        "Axial strain of the front wall's inner (In) and outer, soil-side (Out) bars at the top, "
-                        "mid-height and bottom (embedded bars, docs/buried-structure.md)."))
-        tables.append("<h2>Rebar gauges</h2><table><tr><th>gauge</th><th>bar segment</th><th>peak |strain| [µε]</th>"
+        blocks.append((save(fig, figdir, "fig13_rebar_strain.png"),
+                       "Axial strain of the front wall's inner (In) and outer, soil-side (Out) bars at the top, "
+                       "mid-height and bottom (embedded bars, docs/buried-structure.md)."))
+        blocks.append("<h3>Rebar gauges</h3><table><tr><th>gauge</th><th>bar segment</th><th>peak |strain| [µε]</th>"
                       "<th>plastic strain [µε]</th></tr>" + "".join(rows) + "</table>")
 
     # Energy history and where the boundary work goes (energy.csv, solver/energy_output.hpp).
     epath = os.path.join(out, "energy.csv")
+    if os.path.exists(epath) or summary.get("energy_J"):
+        blocks.append("<h2>Energy balance</h2>")
     if os.path.exists(epath):
         t, c = read_csv(epath)
         terms = ["kinetic", "internal", "hourglass", "eroded", "transmitting", "constraints", "join", "join_face",
@@ -353,7 +393,7 @@ def main():
         for k in terms:
             col = "energy." + k
             if col in c and np.nanmax(np.abs(c[col])) > 0:
-                ax.plot(t * 1e3, c[col] / 1e6, label=k)
+                ax.plot(t * 1e3, c[col] / 1e6, label=energy_name(k))
         ax.set_ylabel("energy [MJ, full revolution]")
         ax.set_title("Energy history (work terms: done on the model)")
         ax.legend(fontsize=8, ncol=2)
@@ -364,17 +404,17 @@ def main():
         ax2.set_xlabel("time [ms]")
         ax2.set_ylabel("% of initial energy")
         ax2.legend(fontsize=8)
-        figures.append((save(fig, figdir, "energy_history.png"),
-                        "Energy history from energy.csv: the terms of the balance and the boundary work split into "
-                        "transmitting dashpots, constraints and loads, SPH-FEM join work and contact work; below, "
-                        "the signed residual (kinetic + internal + hourglass + eroded − initial − boundary work) "
-                        "and the join work, as percentages of the initial energy."))
-        rows = "".join(f"<tr><td>{k}</td><td>{c['energy.' + k][-1] / 1e6:.4g}</td>"
+        blocks.append((save(fig, figdir, "energy_history.png"),
+                       "Energy history from energy.csv: the terms of the balance and the boundary work split into "
+                       "transmitting dashpots, constraints and loads, SPH-FEM join work and contact work; below, "
+                       "the signed residual (kinetic + internal + hourglass + eroded − initial − boundary work) "
+                       "and the join work, as percentages of the initial energy."))
+        rows = "".join(f"<tr><td>{energy_name(k)}</td><td>{c['energy.' + k][-1] / 1e6:.4g}</td>"
                        f"<td>{c['energy.' + k][-1] / e0 * 100:.3g}</td></tr>"
                        for k in terms + ["viscous", "sph_kinetic", "sph_internal", "bar_internal", "residual"]
                        if "energy." + k in c)
-        tables.append(f"<h2>Energy at t = {t[-1] * 1e3:.2f} ms</h2><table><tr><th>term</th><th>MJ</th>"
-                      f"<th>% of E0</th></tr>{rows}</table>")
+        blocks.append(f"<h3>Energy at t = {t[-1] * 1e3:.2f} ms</h3><table><tr><th>term</th><th>[MJ]</th>"
+                      f"<th>% of the initial energy E0</th></tr>{rows}</table>")
 
     # Energy balance (summary.json holds the final state only).
     e = summary.get("energy_J", {})
@@ -382,12 +422,12 @@ def main():
         fig, ax = plt.subplots(figsize=(7.5, 3.6))
         keys = ["kinetic", "internal", "hourglass", "viscous", "boundary_work", "initial_total"]
         vals = [e.get(k) or 0.0 for k in keys]
-        ax.barh(keys, [v / 1e6 for v in vals], color=["C0", "C1", "C2", "C3", "C4", "0.5"])
+        ax.barh([energy_name(k) for k in keys], [v / 1e6 for v in vals], color=["C0", "C1", "C2", "C3", "C4", "0.5"])
         ax.set_xlabel("energy at the end of the run [MJ, full revolution]")
         ax.set_title(f"Energy balance at t = {summary.get('final_time_s', 0) * 1e3:.2f} ms: relative error "
                      f"{(e.get('relative_error') or 0) * 100:.2f} %")
-        figures.append((save(fig, figdir, "energy_balance.png"),
-                        "Energy balance at the end of the run (summary.json)."))
+        blocks.append((save(fig, figdir, "energy_balance.png"),
+                       "Energy balance at the end of the run (summary.json)."))
 
     status = (f"{html.escape(str(summary.get('stop_reason')))} at t = {summary.get('final_time_s', 0) * 1e3:.3f} ms "
               f"(end time {summary.get('end_time_s', 0) * 1e3:.1f} ms) after {summary.get('cycles')} cycles, "
@@ -397,17 +437,18 @@ def main():
             f"Run: {status}.</p>"]
     if summary.get("failed"):
         body.append("<p><b>The run stopped early (numerical failure): the figures show the time simulated.</b></p>")
-    body += tables
-    for fname, caption in figures:
-        body.append(f"<figure><img src='report/{fname}'><figcaption>{html.escape(caption)}</figcaption></figure>")
+    for b in blocks:
+        body.append(b if isinstance(b, str) else
+                    f"<figure><img src='report/{b[0]}'><figcaption>{html.escape(b[1])}</figcaption></figure>")
     page = ("<!doctype html><html><head><meta charset='utf-8'><title>Camouflet report</title><style>"
             "body{font-family:sans-serif;max-width:70em;margin:auto}img{max-width:100%}"
             "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:2px 8px}"
+            "td+td{white-space:nowrap}h2{margin-top:1.6em;border-bottom:1px solid #ccc}figure{margin:1em 0}"
             "figcaption{color:#444;margin-bottom:2em}</style></head><body>" + "\n".join(body) + "</body></html>\n")
     path = os.path.join(out, "report.html")
     with open(path, "w") as f:
         f.write(page)
-    print(f"report: {os.path.abspath(path)} ({len(figures)} figures)")
+    print(f"report: {os.path.abspath(path)} ({sum(not isinstance(b, str) for b in blocks)} figures)")
     return 0
 
 

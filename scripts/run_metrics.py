@@ -263,27 +263,80 @@ def _reference_snapshot(outdir):
     return out, t
 
 
-def structure_damage(outdir, gen):
-    """Damage of the box's elements at the last snapshot: {max, member of the max, mean per member},
-    or {} when the run wrote no mesh snapshot. Members by reference position (_member)."""
+def _section_face(ref3, cell):
+    """The (x, z) polygon of a hex's face on the symmetry plane y = 0, or None when the hex does not
+    touch it. Hex8 lists its bottom face then its top face, so the four plane nodes come unordered:
+    sorted by angle about their centre (the faces are convex)."""
+    on = [i for i in cell if abs(ref3[i, 1]) < 1e-6]  # a micrometre: x - u carries round-off
+    if len(on) != 4:
+        return None
+    xz = ref3[on][:, [0, 2]]
+    c = xz.mean(axis=0)
+    return xz[np.argsort(np.arctan2(xz[:, 1] - c[1], xz[:, 0] - c[0]))]
+
+
+def box_section(outdir, gen):
+    """The box's elements in its section at the last snapshot, or None without a mesh snapshot with
+    damage: {"time": s, "polygons": [(k, 2) reference (r, z)], "centres": (n, 2), "damage": (n,)}.
+    The section is the r-z plane, or in 3-D the symmetry plane y = 0 (the box's mid-width; (x, z)
+    taken as (r, z)), through the hexes with a face on it. Reference positions x - u: the section
+    stays the undeformed box (its displacements are millimetres)."""
     box = _box(gen)
-    snap, _ = _reference_snapshot(outdir)
-    if box is None or 0 not in snap or "damage" not in snap[0][3]:
-        return {}
-    _, ref, conn, f = snap[0]
+    files, t = last_snapshots(outdir)
+    if box is None or 0 not in files:
+        return None
+    pts, conn, f = read_vtu(files[0])
+    if "damage" not in f:
+        return None
+    ref3 = pts - f.get("displacement", np.zeros_like(pts))
+    three_d = bool(len(pts) and np.any(pts[:, 2] != 0.0))
     r1, r2, zb, zt, _ = box
+    polygons, centres, damage = [], [], []
+    for c, d in zip(conn, f["damage"]):
+        poly = _section_face(ref3, c) if three_d else ref3[c][:, :2]
+        if poly is None:
+            continue
+        r, z = poly.mean(axis=0)
+        if r1 < r < r2 and zb < z < zt:  # the box interior has no elements: inside the outline is concrete
+            polygons.append(poly)
+            centres.append((r, z))
+            damage.append(float(d))
+    if not polygons:
+        return None
+    return {"time": t, "polygons": polygons, "centres": np.array(centres), "damage": np.array(damage),
+            "box": box, "three_d": three_d}
+
+
+def front_wall_halves(centres, damage, box):
+    """(lower, upper) mean damage of the front wall's elements, split at the box's mid-height by
+    element centre: the paper's Fig. 14 finds the heaviest damage in the lower part (the ground
+    surface above shifts it down from the centre). NaN for an empty half."""
+    r1, r2, zb, zt, _ = box
+    mid = 0.5 * (zb + zt)
+    front = np.array([_member(r, z, box) == "front wall" for r, z in centres], dtype=bool)
+    z = np.asarray(centres)[:, 1] if len(centres) else np.zeros(0)
+    lower, upper = damage[front & (z < mid)], damage[front & (z >= mid)]
+    return (float(np.mean(lower)) if len(lower) else float("nan"),
+            float(np.mean(upper)) if len(upper) else float("nan"))
+
+
+def structure_damage(outdir, gen):
+    """Damage of the box's elements in its section at the last snapshot: {max, member of the max,
+    mean per member, front wall's (lower, upper) half means, the section (box_section)}, or {} when
+    the run wrote no mesh snapshot. Members by reference position (_member)."""
+    sec = box_section(outdir, gen)
+    if sec is None:
+        return {}
+    box = sec["box"]
     members = {}
     best = (-1.0, "")
-    for c, d in zip(conn, f["damage"]):
-        r, z = ref[c].mean(axis=0)
-        if r1 < r < r2 and zb < z < zt:  # the box interior has no elements: inside the outline is concrete
-            m = _member(r, z, box)
-            members.setdefault(m, []).append(d)
-            if d > best[0]:
-                best = (float(d), m)
-    if not members:
-        return {}
-    return {"max": best[0], "member": best[1], "mean": {m: float(np.mean(v)) for m, v in members.items()}}
+    for (r, z), d in zip(sec["centres"], sec["damage"]):
+        m = _member(r, z, box)
+        members.setdefault(m, []).append(d)
+        if d > best[0]:
+            best = (float(d), m)
+    return {"max": best[0], "member": best[1], "mean": {m: float(np.mean(v)) for m, v in members.items()},
+            "front_wall_halves": front_wall_halves(sec["centres"], sec["damage"], box), "section": sec}
 
 
 def crater(outdir, gen):
@@ -396,6 +449,7 @@ def run_metrics(outdir, camouflet=""):
     m["max_damage"] = dmg.get("max", nan)
     m["max_damage_member"] = dmg.get("member", "")
     m["front_wall_mean_damage"] = dmg.get("mean", {}).get("front wall", nan)
+    m["front_wall_lower_mean_damage"], m["front_wall_upper_mean_damage"] = dmg.get("front_wall_halves", (nan, nan))
     others = [v for k, v in dmg.get("mean", {}).items() if k != "front wall"]
     m["other_members_mean_damage"] = max(others) if others else nan
     cr = crater(outdir, gen)

@@ -50,6 +50,21 @@ void read_run(TomlReader& r, Model& model) {
                                     run.gravity[0]));
   }
 
+  if (auto d = r.table("dynamic_relaxation")) {
+    RunControl::DynamicRelaxation dr;
+    dr.where = d->where();
+    dr.period = d->positive("period");
+    dr.tolerance = d->positive("tolerance", dr.tolerance);
+    if (dr.tolerance >= 1.0) d->fail("tolerance", fmt::format("must lie below 1, got {}", dr.tolerance));
+    // Twenty periods: a damping at the critical rate settles the fundamental mode in about one.
+    dr.max_time = d->positive("max_time", 20.0 * dr.period);
+    if (dr.max_time < 2.0 * dr.period)
+      d->fail("max_time",
+              fmt::format("must allow at least two periods ({} s), got {} s", 2.0 * dr.period, dr.max_time));
+    d->finish();
+    run.relaxation = dr;
+  }
+
   if (auto v = r.table("viscosity")) {
     run.viscosity_linear = v->non_negative("linear", run.viscosity_linear);
     run.viscosity_quadratic = v->non_negative("quadratic", run.viscosity_quadratic);

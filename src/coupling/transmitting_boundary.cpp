@@ -186,7 +186,20 @@ void TransmittingBoundary<D>::hold_initial_state(const double* unbalanced) {
   // forces are: taken as the nodal residual, it also carries the boundary half-elements' weight.
   static_force_.assign(nodes_.size(), {});
   for (std::size_t k = 0; k < nodes_.size(); ++k)
-    for (int i = 0; i < D; ++i) static_force_[k][static_cast<std::size_t>(i)] = -unbalanced[nodes_[k] * D + i];
+    for (int i = 0; i < D; ++i) static_force_[k][i] = -unbalanced[nodes_[k] * D + i];
+}
+
+template <int D>
+void TransmittingBoundary<D>::visit_state(StateVisitor& v) {
+  StateScope scope(v, "transmitting");
+  visit(v, "static_force", static_force_);
+}
+
+template <int D>
+void TransmittingBoundary<D>::hold_still(double* v) {
+  if (nodes_.empty()) collect_nodes();
+  for (const std::int64_t n : nodes_)
+    for (int i = 0; i < D; ++i) v[n * D + i] = 0.0;
 }
 
 template <int D>
@@ -194,7 +207,7 @@ double TransmittingBoundary<D>::add_static_forces(const double* v_old, double dt
   double work = 0.0;
   for (std::size_t k = 0; k < static_force_.size(); ++k)
     for (int i = 0; i < D; ++i) {
-      const double fi = static_force_[k][static_cast<std::size_t>(i)];
+      const double fi = static_force_[k][i];
       f[nodes_[k] * D + i] += fi;
       work += fi * v_old[nodes_[k] * D + i] * dt_old;
     }

@@ -20,6 +20,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/state_visitor.hpp"
+#include "core/vec.hpp"
 #include "fem/fem_elements.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
@@ -45,12 +47,20 @@ class TransmittingBoundary {
   double damp(const double* x, const double* v_old, double* v, const double* node_mass,
               const FemElements<D>& elements, const std::vector<MaterialPoints>& batches, double dt);
 
+  // During a dynamic relaxation (solver/dynamic_relaxation.cpp): the boundary nodes held at
+  // rest in place of the dashpots, as the soil beyond them is. A boundary that carried its t = 0
+  // static load while the structure settled would let the whole model drift at the dashpots'
+  // terminal speed wherever the structure's weight differs from the soil's it replaces.
+  void hold_still(double* v);
   // At t = 0: `unbalanced` (n*D, N) is each node's internal force plus its weight in the initial
   // state; the boundary nodes keep -unbalanced as their static force from then on.
   void hold_initial_state(const double* unbalanced);
   // Adds the static forces to f (n*D) at t_n and returns their work from t_(n-1) to t_n,
   // f . v(n-1/2) dt(n-1/2) (J; constant forces: exact).
   double add_static_forces(const double* v_old, double dt_old, double* f) const;
+  // The static forces for checkpoints: after a dynamic relaxation they are the relaxed state's,
+  // which a restarted run cannot rebuild from the mesh.
+  void visit_state(StateVisitor& v);
 
  private:
   struct Face {
@@ -60,7 +70,7 @@ class TransmittingBoundary {
   std::vector<Face> faces_;
   std::vector<std::int64_t> nodes_;                 // boundary nodes, sorted
   std::vector<std::array<double, D * D>> damping_;  // N s/m, per entry of nodes_
-  std::vector<std::array<double, D>> static_force_;  // N, per entry of nodes_ (empty: none)
+  std::vector<Vec<D>> static_force_;                // N, per entry of nodes_ (empty: none)
   void collect_nodes();
   bool axisymmetric_ = false;
 };

@@ -29,6 +29,7 @@ class JwlEos : public EquationOfState {
   JwlEos(const JwlParameters& p, double detonation_velocity, double burn_width_factor);
 
   std::string type() const override { return "jwl"; }
+  bool programmed_burn() const override { return true; }
   double reference_density() const override { return p_.density; }
   double reference_specific_energy() const override { return p_.e0 / p_.density; }
   void register_state(MaterialPoints& pts) const override;

@@ -46,6 +46,10 @@ class EquationOfState {
   // explosives set their lighting times here. Default: nothing.
   virtual void place(MaterialPoints& /*pts*/, std::span<const std::array<double, 3>> /*positions*/,
                      const std::vector<DetonationPoint>& /*detonations*/) const {}
+  // An explosive under programmed burn: no pressure until it is lit, and compression lights it.
+  // A dynamic relaxation holds its points still (the unreacted charge is a solid the soil rests
+  // on; squeezed pressureless by the overburden it would burn before t = 0).
+  virtual bool programmed_burn() const { return false; }
 };
 
 class StrengthModel {

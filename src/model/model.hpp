@@ -56,6 +56,16 @@ struct RunControl {
   // every node and particle, its work booked in the energy balance (docs/theory/gravity.md).
   std::array<double, 3> gravity{};
   bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0; }
+  // Dynamic relaxation before t = 0 ([run.dynamic_relaxation]; docs/theory/gravity.md): the
+  // model is brought to rest under gravity and its t = 0 loads with a damping at the critical
+  // rate of its fundamental period, then the transient starts from that state at rest.
+  struct DynamicRelaxation {
+    double period = 0.0;      // s, the model's fundamental period (an estimate); damping rate 4 pi / period
+    double tolerance = 1e-4;  // rest: kinetic energy at most this fraction of its peak for a whole period
+    double max_time = 0.0;    // s of relaxation after which an unsettled model stops the run
+    SourceLocation where;
+  };
+  std::optional<DynamicRelaxation> relaxation;
   double energy_error_limit = 0.05;  // relative; warn past half, stop when exceeded (solver/energy_guard.hpp)
   // Domain box (m; axisymmetric r, z): a node or particle leaving it stops the run. Unbounded by default.
   std::array<double, 3> domain_min{-std::numeric_limits<double>::infinity(),

@@ -88,7 +88,8 @@ struct RunOutput::Impl {
   }
 };
 
-RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldSnapshot& initial)
+RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldSnapshot& initial,
+                     bool write_initial_now)
     : impl_(std::make_unique<Impl>(model)) {
   Impl& o = *impl_;
   // Gauges first: a gauge outside the mesh is bad input and must leave no folder behind.
@@ -124,6 +125,12 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
       o.csv.push_back(
           std::make_unique<GaugeCsv>(o.dir / (ser.group + ".csv"), ser.gauge_names, ser.quantities));
   }
+  if (write_initial_now) write_initial(initial);
+}
+
+void RunOutput::write_initial(const FieldSnapshot& initial) {
+  Impl& o = *impl_;
+  if (o.restarting) return;  // the checkpoint's rows and schedule go on instead
   o.snapshot(initial);
   o.sample(initial);
 }

@@ -19,7 +19,13 @@ class RunOutput {
   // creates the folder, copies the case file, writes the first snapshot and
   // gauge row. With an empty options.output_dir gauges are still sampled
   // (tests read them through gauge_peaks()) but nothing is written.
-  RunOutput(const Model& model, const RunOptions& options, const FieldSnapshot& initial);
+  // With write_initial false the first snapshot and gauge row wait for
+  // write_initial(): a dynamic relaxation moves the model between the
+  // configuration the gauges are located in (the mesh as given, as on a
+  // restart) and the state at rest that t = 0 records.
+  RunOutput(const Model& model, const RunOptions& options, const FieldSnapshot& initial,
+            bool write_initial = true);
+  void write_initial(const FieldSnapshot& initial);
   ~RunOutput();
   RunOutput(const RunOutput&) = delete;
   RunOutput& operator=(const RunOutput&) = delete;

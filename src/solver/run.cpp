@@ -28,7 +28,19 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   Solver<D> solver(model);
-  RunOutput output(model, options, solver.snapshot());
+  // Gauges are located in the mesh as given, on a fresh start as on a restart; a dynamic
+  // relaxation then brings the model to rest, and t = 0 records that state.
+  const bool relaxing = options.restart.empty() && model.run.relaxation.has_value();
+  RunOutput output(model, options, solver.snapshot(), !relaxing);
+  if (relaxing) {
+    const auto relaxed = solver.relax(*model.run.relaxation);
+    if (options.progress != ProgressStyle::none)
+      fmt::print(stderr,
+                 "dynamic relaxation: at rest after {:.6g} s ({} cycles); kinetic energy {:.3g} of its peak "
+                 "{:.6g} J\n",
+                 relaxed.time, relaxed.cycles, relaxed.kinetic_ratio, relaxed.peak_kinetic);
+    output.write_initial(solver.snapshot());
+  }
   BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories
   EnergyCsv<D> energy_csv(model, options, solver);   // energy history and its split
   // Checkpoints and restarts: the solver's state, then the output's.

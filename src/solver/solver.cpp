@@ -180,7 +180,8 @@ void Solver<D>::start_energy_and_step() {
   if (particles_) kinetic += particles_->kinetic_energy();
   energy_.kinetic = kinetic;
   energy_.internal = internal_energy_;
-  energy_.initial_total = kinetic + internal_energy_;
+  // The stiffness-form hourglass energy is nought at t = 0 unless a relaxation stored some.
+  energy_.initial_total = kinetic + internal_energy_ + hourglass_stored_;
 }
 
 template <int D>
@@ -300,7 +301,10 @@ template <int D>
 void Solver<D>::constrain_velocities() {
   const double dt_mean = 0.5 * (dt_ + dt_next_);
   // Transmitting boundaries first: centred dashpots on v(n+1/2) (coupling/transmitting_boundary.hpp).
-  if (!transmitting_.empty()) {
+  if (relaxing_) hold_charges_still();
+  if (!transmitting_.empty() && relaxing_) {
+    transmitting_.hold_still(velocity_.data());
+  } else if (!transmitting_.empty()) {
     const double damping_work = transmitting_.damp(position_.data(), velocity_old_.data(), velocity_.data(),
                                                    node_mass_.data(), elements_, batches_, dt_mean);
     energy_.boundary_work += damping_work;

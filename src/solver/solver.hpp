@@ -44,6 +44,22 @@ class Solver {
   // boundaries, voted into the first time step and counted in the initial energy.
   void set_initial_velocity(const std::vector<double>& v);
 
+  // Before the first step: dynamic relaxation ([run.dynamic_relaxation]; solver/dynamic_relaxation.cpp).
+  // Cycles under gravity and the t = 0 loads with every velocity damped at the rate 4 pi / period
+  // until the kinetic energy has stayed below tolerance x its peak for a whole period; then the
+  // nodes and particles are set at rest where they are (displacements zeroed), the clock, cycle
+  // and energy balance restart at 0, and transmitting boundaries, held still meanwhile, take the
+  // relaxed state's reaction as their static load.
+  // The clock stays at t = 0 throughout: no burn starts, no load moves on. Throws
+  // NumericalError when the model has not settled within max_time.
+  struct Relaxation {
+    double time = 0.0;  // s of relaxation
+    std::int64_t cycles = 0;
+    double kinetic_ratio = 0.0;  // kinetic energy at the end over its peak
+    double peak_kinetic = 0.0;   // J
+  };
+  Relaxation relax(const RunControl::DynamicRelaxation& relaxation);
+
   // Caps the next time step (the driver uses it to land on the end time).
   void limit_next_step(double dt_max);
 
@@ -171,6 +187,12 @@ class Solver {
   // at their last read in a step, so add_forces need not fill them again
   // (false after a restore: a checkpoint holds the forces of its last step).
   bool node_forces_zeroed_ = false;
+  bool relaxing_ = false;  // in relax(): transmitting boundaries hold their nodes still
+  // In relax(): the nodes and particle materials of explosives under programmed burn, held still
+  // (EquationOfState::programmed_burn).
+  std::vector<std::int64_t> relaxation_held_nodes_;
+  std::vector<char> relaxation_held_materials_;
+  void hold_charges_still();  // dynamic_relaxation.cpp
   double dt_ = 0.0;       // s, the step just taken (t_{n-1/2})
   double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
   TimeStepLimit limit_;

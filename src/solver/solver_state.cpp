@@ -83,6 +83,7 @@ void Solver<D>::visit_state(StateVisitor& v) {
     camouflet::visit_state(v, batches_[m]);
   }
   boundaries_.visit_state(v);
+  transmitting_.visit_state(v);
   if (particles_) particles_->visit_state(v);
   bars_.visit_state(v);
 }

@@ -333,6 +333,23 @@ TimeStepLimit SphSystem<D>::stable_time_step() const {
 }
 
 template <int D>
+void SphSystem<D>::scale_velocities(double factor) {
+  for (Vec<D>& v : p_.velocity) v = v * factor;
+}
+
+template <int D>
+void SphSystem<D>::hold_still(const std::vector<char>& held_material) {
+  for (std::size_t k = 0; k < p_.real; ++k)
+    if (held_material[static_cast<std::size_t>(p_.material[k])]) p_.velocity[k] = Vec<D>{};
+}
+
+template <int D>
+void SphSystem<D>::come_to_rest() {
+  for (auto* field : {&p_.velocity, &velocity_old_, &p_.displacement})
+    for (Vec<D>& v : *field) v = Vec<D>{};
+}
+
+template <int D>
 double SphSystem<D>::kinetic_energy() const {
   double e = 0.0;
   for (std::size_t i = 0; i < p_.real; ++i) e += 0.5 * p_.mass[i] * dot(p_.velocity[i], p_.velocity[i]);

@@ -137,6 +137,15 @@ class SphSystem {
   // section 10), the smallest over particles, without the CFL factor; the reason names the particle.
   TimeStepLimit stable_time_step() const;
 
+  // Dynamic relaxation (solver/dynamic_relaxation.cpp): every velocity times `factor` (the
+  // damping of one step), and at its end every particle at rest where it stands, its
+  // displacement counted from there.
+  void scale_velocities(double factor);
+  void come_to_rest();
+  // Particles of the flagged materials (one entry per Model::materials entry) at rest: their
+  // velocities zeroed after the kick, before the drift (held charges in a relaxation).
+  void hold_still(const std::vector<char>& held_material);
+
   double kinetic_energy() const;  // J (axisymmetric: full revolution)
   // Time-centred kinetic energy at t_n, 1/2 m v(n-1/2) . v(n+1/2) (after kick()).
   double centred_kinetic_energy() const;

@@ -123,6 +123,8 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "gauge_interval", s.gauge_interval, s);
     read(*t, "cfl", s.cfl, s);
     read(*t, "hourglass_coefficient", s.hourglass_coefficient, s);
+    read(*t, "gravity", s.gravity, s);
+    read(*t, "relaxation_period", s.relaxation_period, s);
     t->finish();
   }
   if (auto t = root.table("gauges")) {

@@ -76,6 +76,15 @@ void check(const BuriedStructureSpec& s, double a) {
   if (!(s.field_interval >= 0.0)) fail("run.field_interval", "must be >= 0");
   if (!(s.gauge_interval >= 0.0)) fail("run.gauge_interval", "must be >= 0");
   if (!(s.cfl > 0.0 && s.cfl <= 1.0)) fail("run.cfl", fmt::format("must lie in (0, 1], got {}", s.cfl));
+  if (!(s.gravity >= 0.0))
+    fail("run.gravity", fmt::format("must be >= 0 (m/s^2, its magnitude), got {}", s.gravity));
+  if (s.gravity > 0.0 && !(s.relaxation_period > 0.0))
+    fail("run.relaxation_period",
+         "needed with run.gravity: the model's fundamental period (s), about 4 domain.depth / c_s with c_s "
+         "the "
+         "soil's shear-wave speed, for the dynamic relaxation that settles the box before t = 0");
+  if (s.gravity == 0.0 && s.relaxation_period != 0.0)
+    fail("run.relaxation_period", "given without run.gravity: there is nothing to relax");
   if (!(s.hourglass_coefficient > 0.0 && s.hourglass_coefficient <= 0.5))
     fail("run.hourglass_coefficient",
          fmt::format("must lie in (0, 0.5] (stiffness-form hourglass control), got {}",
@@ -353,10 +362,18 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "# No SPH zone (sph.radius = 0): the charge (JWL elements, programmed burn) and the near field are\n"
         "# Lagrangian FEM: crater ejecta are not followed, and the run stops if elements next to the charge\n"
         "# invert.\n";
-  else
+  else if (s.gravity == 0.0)
     b +=
         "# Ejecta: no domain box is set, so particles thrown above the ground fly on (no gravity) and never\n"
         "# stop the run; none is removed.\n";
+  else
+    b +=
+        "# Ejecta: no domain box is set; particles thrown above the ground fly under gravity and never stop\n"
+        "# the run; none is removed.\n";
+  if (s.gravity > 0.0)
+    b +=
+        "# Gravity: the FEM soil starts in its geostatic state (Jaky's K0), the SPH zone and the box settle\n"
+        "# in it by a dynamic relaxation before t = 0, the charge held unlit (docs/theory/gravity.md).\n";
   if (s.has_rebar)
     fmt::format_to(
         out,
@@ -394,10 +411,11 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
       const std::string name = fmt::format("{}_r{}_z{}", material, i, j);
       // Grading along z runs from the block's deep edge up: the inverse of the depth grading.
       fmt::format_to(out,
-                     "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\n{}block = {{ origin = [{:.9g}, {:.9g}], "
+                     "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\n{}{}block = {{ origin = [{:.9g}, {:.9g}], "
                      "size = [{:.9g}, {:.9g}], cells = [{}, {}], grading = [{:.9g}, {:.9g}] }}\n\n",
-                     name, material, buried_detail::part_hourglass(s, material), ri.a, -yj.b + 0.0,
-                     ri.b - ri.a, yj.b - yj.a, ri.cells, yj.cells, ri.grading, 1.0 / yj.grading);
+                     name, material, buried_detail::part_hourglass(s, material),
+                     buried_detail::part_geostatic(s, material), ri.a, -yj.b + 0.0, ri.b - ri.a, yj.b - yj.a,
+                     ri.cells, yj.cells, ri.grading, 1.0 / yj.grading);
       if (i == 0) fmt::format_to(bout, "[[boundary]]\ntype = \"axis\"\nset = \"{}.xmin\"\n\n", name);
       if (i + 1 == g.r.size())
         fmt::format_to(bout, "[[boundary]]\ntype = \"{}\"\nset = \"{}.xmax\"\n\n", far_type, name);
@@ -524,8 +542,17 @@ void write_soil_gauges(const BuriedStructureSpec& s, bool three_d, std::string& 
 
 void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry, std::string& b) {
   auto out = std::back_inserter(b);
-  fmt::format_to(out, "title = \"{}\"\n\n[run]\ngeometry = \"{}\"\nend_time = {}  # s\ncfl = {}\n\n", s.title,
+  fmt::format_to(out, "title = \"{}\"\n\n[run]\ngeometry = \"{}\"\nend_time = {}  # s\ncfl = {}\n", s.title,
                  geometry, s.end_time, s.cfl);
+  if (s.gravity > 0.0)
+    fmt::format_to(
+        out,
+        "gravity = {}  # m/s^2\n\n[run.dynamic_relaxation]  # settles the box in the geostatic soil\n"
+        "period = {}  # s\n",
+        std::string(geometry) == "3d" ? fmt::format("[0, 0, {}]", -s.gravity)
+                                      : fmt::format("[0, {}]", -s.gravity),
+        s.relaxation_period);
+  b += "\n";
   // Stiffness-form hourglass control: under the charge the soil flows plastically for tens of
   // milliseconds, and the viscous form (resisting hourglass velocities only) let the elements next
   // to the axis drift into a sawtooth that grew until nodes crossed the axis (coarse 29 ms, default
@@ -543,6 +570,11 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
                  s.explosive);
   fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
   if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
+}
+
+std::string part_geostatic(const BuriedStructureSpec& s, const std::string& material) {
+  if (s.gravity == 0.0 || material != "soil") return "";
+  return "geostatic = { surface = 0.0, k0 = \"jaky\" }\n";
 }
 
 std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material) {

@@ -108,6 +108,11 @@ struct BuriedStructureSpec {
   double field_interval = 0.005;  // s
   double gauge_interval = 2e-5;   // s
   double cfl = 0.6;
+  // Gravity (m/s^2, 0: none): with it every FEM soil part starts in its geostatic state (Jaky's
+  // K0) and a dynamic relaxation of period `relaxation_period` (s) settles the box in it before
+  // t = 0 (docs/theory/gravity.md).
+  double gravity = 0.0;
+  double relaxation_period = 0.0;
   int gauge_count = 10;  // gauges per soil group (A and B)
 
   // Where each key was read (for errors naming it); keys absent fall back to `source`.

@@ -305,10 +305,11 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
         // Along z the block runs from its deep face up: the inverse of the depth grading.
         fmt::format_to(
             out,
-            "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\n{}block = {{ origin = {}, size = [{:.12g}, "
+            "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\n{}{}block = {{ origin = {}, size = [{:.12g}, "
             "{:.12g}, {:.12g}], cells = [{}, {}, {}], grading = [{:.9g}, {:.9g}, {:.9g}] }}\n\n",
-            name, material, part_hourglass(s, material), fmt_point(xi.a, yj.a, -dk.b), xi.b - xi.a,
-            yj.b - yj.a, dk.b - dk.a, xi.cells, yj.cells, dk.cells, xi.grading, yj.grading, 1.0 / dk.grading);
+            name, material, part_hourglass(s, material), part_geostatic(s, material),
+            fmt_point(xi.a, yj.a, -dk.b), xi.b - xi.a, yj.b - yj.a, dk.b - dk.a, xi.cells, yj.cells, dk.cells,
+            xi.grading, yj.grading, 1.0 / dk.grading);
         if (j == 0)
           fmt::format_to(bout,
                          "[[boundary]]\ntype = \"symmetry\"\nset = \"{}.ymin\"\nnormal = [0.0, 1.0, 0.0]\n\n",

@@ -41,6 +41,8 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
 // "charge"): the box's own control where it differs from the soil's (the
 // run's); empty otherwise.
 std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material);
+// `geostatic = { ... }` line of a FEM part of `material`: soil under gravity; empty otherwise.
+std::string part_geostatic(const BuriedStructureSpec& s, const std::string& material);
 
 // Keys of one geometry given in the other (structure.width, domain.side in
 // r-z) or missing (structure.width in 3-D): InputError naming the key.

@@ -13,7 +13,8 @@
 namespace camouflet {
 
 template <int D>
-typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxation& relaxation) {
+typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxation& relaxation,
+                                                const std::function<void(const Relaxation&)>& after_cycle) {
   if (cycle_ != 0) throw std::logic_error("relax: before the first step");
   // Mass-proportional damping dv/dt = -c v at c = 2 omega_1 = 4 pi / T: critical for the
   // fundamental mode, which then settles within about a period; the higher modes ring down at
@@ -47,6 +48,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
     const double kinetic = energy_.kinetic;  // at t_n of this cycle, before its damping
     r.peak_kinetic = std::max(r.peak_kinetic, kinetic);
     r.kinetic_ratio = r.peak_kinetic > 0.0 ? kinetic / r.peak_kinetic : 0.0;
+    if (after_cycle) after_cycle(r);
     if (kinetic <= relaxation.tolerance * r.peak_kinetic) {
       if (quiet_since < 0.0) quiet_since = r.time;
     } else {
@@ -101,7 +103,9 @@ void Solver<D>::hold_charges_still() {
 
 template void Solver<2>::hold_charges_still();
 template void Solver<3>::hold_charges_still();
-template Solver<2>::Relaxation Solver<2>::relax(const RunControl::DynamicRelaxation&);
-template Solver<3>::Relaxation Solver<3>::relax(const RunControl::DynamicRelaxation&);
+template Solver<2>::Relaxation Solver<2>::relax(const RunControl::DynamicRelaxation&,
+                                                const std::function<void(const Relaxation&)>&);
+template Solver<3>::Relaxation Solver<3>::relax(const RunControl::DynamicRelaxation&,
+                                                const std::function<void(const Relaxation&)>&);
 
 }  // namespace camouflet

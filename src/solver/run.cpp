@@ -33,7 +33,17 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   const bool relaxing = options.restart.empty() && model.run.relaxation.has_value();
   RunOutput output(model, options, solver.snapshot(), !relaxing);
   if (relaxing) {
-    const auto relaxed = solver.relax(*model.run.relaxation);
+    // A line every log interval (wall clock): a relaxation runs tens of thousands of cycles.
+    const bool report = options.progress != ProgressStyle::none;
+    double next_line = model.output.log_interval_s;
+    const auto relaxed = solver.relax(*model.run.relaxation, [&](const Solver<D>::Relaxation& r) {
+      if (!report || wall() < next_line) return;
+      next_line = wall() + model.output.log_interval_s;
+      fmt::print(stderr,
+                 "dynamic relaxation: {:.4g} s of relaxation ({} cycles, {:.0f} s wall); kinetic energy "
+                 "{:.3g} of its peak\n",
+                 r.time, r.cycles, wall(), r.kinetic_ratio);
+    });
     if (options.progress != ProgressStyle::none)
       fmt::print(stderr,
                  "dynamic relaxation: at rest after {:.6g} s ({} cycles); kinetic energy {:.3g} of its peak "

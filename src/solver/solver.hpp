@@ -8,6 +8,7 @@
 // velocity gradient by kernel sums) slot in beside element_kinematics, and
 // their material points are further batches updated by update_materials.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,7 +59,9 @@ class Solver {
     double kinetic_ratio = 0.0;  // kinetic energy at the end over its peak
     double peak_kinetic = 0.0;   // J
   };
-  Relaxation relax(const RunControl::DynamicRelaxation& relaxation);
+  // `after_cycle`, if given, sees the relaxation so far after every cycle (progress lines).
+  Relaxation relax(const RunControl::DynamicRelaxation& relaxation,
+                   const std::function<void(const Relaxation&)>& after_cycle = {});
 
   // Caps the next time step (the driver uses it to land on the end time).
   void limit_next_step(double dt_max);

@@ -142,6 +142,41 @@ TEST(BuriedStructure, BadInputNamesTheKey) {
   expect_refused(s, "domain.radius");
 }
 
+// Gravity: the case gets [run] gravity, a dynamic relaxation of the given period and Jaky's
+// geostatic state on every FEM soil part (none on the box, the charge or the SPH zone).
+TEST(BuriedStructure, GravityWritesGeostaticSoilAndRelaxation) {
+  BuriedStructureSpec spec = test::with_sph_zone_and_rebar(paper_coarse(), 1.5, 0.025, 0.005);
+  spec.gravity = 9.81;
+  spec.relaxation_period = 0.21;
+  const Model model = read_case_text(buried_structure_case(spec, "test"), "gravity.toml");
+  EXPECT_EQ(model.run.gravity[1], -9.81);
+  ASSERT_TRUE(model.run.relaxation.has_value());
+  EXPECT_EQ(model.run.relaxation->period, 0.21);
+  std::size_t soil = 0;
+  for (const Part& part : model.parts) {
+    const std::string& material = model.materials[static_cast<std::size_t>(part.material)].name;
+    const bool fem_soil = part.kind == PartKind::fem && material == "soil";
+    EXPECT_EQ(part.geostatic.has_value(), fem_soil) << part.name;
+    if (fem_soil) {
+      ++soil;
+      EXPECT_EQ(part.geostatic->surface, 0.0);
+      EXPECT_FALSE(part.geostatic->k0.has_value()) << "Jaky's K0";
+    }
+  }
+  EXPECT_GT(soil, 10u);
+
+  BuriedStructureSpec bad = paper_coarse();
+  bad.gravity = 9.81;  // no period
+  expect_refused(bad, "run.relaxation_period");
+  bad = paper_coarse();
+  bad.relaxation_period = 0.2;  // no gravity
+  expect_refused(bad, "run.relaxation_period");
+  bad = paper_coarse();
+  bad.gravity = -9.81;
+  bad.relaxation_period = 0.2;
+  expect_refused(bad, "run.gravity");
+}
+
 // The paper's zoning (Fig. 6): an SPH zone around the charge, joined to the
 // FEM soil, the charge as SPH explosive particles, reinforcement as bars.
 TEST(BuriedStructure, SphZoneAndRebarCase) {

@@ -68,4 +68,12 @@ void record_check(const std::string& problem, const std::string& reference, cons
                      passed ? "true" : "false"));
 }
 
+void record_observation(const std::string& problem, const std::string& reference, const std::string& outcome,
+                        bool inside) {
+  append(fmt::format(
+      R"({{"test":"{}","problem":"{}","reference":"{}","outcome":"{}","passed":true,"asserted":false,"inside":{}}})",
+      json_escape(test_name()), json_escape(problem), json_escape(reference), json_escape(outcome),
+      inside ? "true" : "false"));
+}
+
 }  // namespace camouflet::test

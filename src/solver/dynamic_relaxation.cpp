@@ -87,7 +87,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
   gather_element_state();
   // The boundary now holds the relaxed state's load, which differs from the initial one where
   // the relaxation moved the soil next to it.
-  hold_transmitting_boundaries();
+  hold_transmitting_boundaries(true);
   start_energy_and_step();
   return r;
 }

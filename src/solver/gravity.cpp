@@ -37,19 +37,27 @@ void Solver<D>::add_gravity() {
   const double work = power * dt_;
   energy_.boundary_work += work;
   split_.gravity += work;
-  // The static load the transmitting boundaries carry (hold_transmitting_boundaries).
-  if (!transmitting_.empty()) {
-    const double static_work = transmitting_.add_static_forces(velocity_.data(), dt_, force_.data());
-    energy_.boundary_work += static_work;
-    split_.transmitting += static_work;
-  }
 }
 
 template <int D>
-void Solver<D>::hold_transmitting_boundaries() {
-  if (!model_.run.has_gravity() || transmitting_.empty()) return;
+void Solver<D>::add_static_boundary_forces() {
+  // The static load the transmitting boundaries carry (hold_transmitting_boundaries): under
+  // gravity, and after a dynamic relaxation under the t = 0 loads with or without it. Boundaries
+  // that hold nothing have no static forces.
+  if (transmitting_.empty()) return;
+  const double static_work = transmitting_.add_static_forces(velocity_.data(), dt_, force_.data());
+  energy_.boundary_work += static_work;
+  split_.transmitting += static_work;
+}
+
+template <int D>
+void Solver<D>::hold_transmitting_boundaries(bool relaxed) {
+  // A stress-free start has nothing to hold; a geostatic one under gravity, or a relaxed one
+  // (under gravity or the t = 0 loads alone), has.
+  if (transmitting_.empty() || !(relaxed || model_.run.has_gravity())) return;
   // Each node's internal force plus its weight in the initial state: what the soil beyond a
-  // transmitting boundary held, which the boundary now holds in its place.
+  // transmitting boundary held, which the boundary now holds in its place. A load applied to the
+  // boundary's own nodes is not part of the hold (the dashpots see its effect as motion).
   std::vector<double> unbalanced(position_.size(), 0.0);
   if (elements_.area_weighted_momentum()) elements_.update_ring_factors(position_.data());
   elements_.add_internal_forces(position_.data(), velocity_.data(), unbalanced.data(), nullptr, hourglass_, 0.0);
@@ -62,7 +70,9 @@ void Solver<D>::hold_transmitting_boundaries() {
 
 template void Solver<2>::add_gravity();
 template void Solver<3>::add_gravity();
-template void Solver<2>::hold_transmitting_boundaries();
-template void Solver<3>::hold_transmitting_boundaries();
+template void Solver<2>::add_static_boundary_forces();
+template void Solver<3>::add_static_boundary_forces();
+template void Solver<2>::hold_transmitting_boundaries(bool);
+template void Solver<3>::hold_transmitting_boundaries(bool);
 
 }  // namespace camouflet

@@ -274,6 +274,7 @@ void Solver<D>::add_forces() {
     contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(),
                                     0.5 * (dt_ + dt_next_));
   add_gravity();  // after the particle sums, which set the particles' accelerations
+  add_static_boundary_forces();
 }
 
 template <int D>

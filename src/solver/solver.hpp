@@ -119,7 +119,9 @@ class Solver {
   // Stages of step(), in order.
   void add_forces();
   void add_gravity();  // the body force m g and its work (solver/gravity.cpp)
-  void hold_transmitting_boundaries();  // their static load under gravity, at t = 0 (gravity.cpp)
+  void add_static_boundary_forces();  // the transmitting boundaries' static load and its work (gravity.cpp)
+  // Their static load at t = 0: under gravity, or after a relaxation (`relaxed`) (gravity.cpp).
+  void hold_transmitting_boundaries(bool relaxed = false);
   void set_geostatic_state();  // initial stress, density and compaction of geostatic parts (geostatic_state.cpp)
   void advance_velocities();
   void constrain_velocities();

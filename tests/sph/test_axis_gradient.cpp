@@ -20,10 +20,10 @@ struct ColumnAcceleration {
   int count = 0;
 };
 
-// Hydrostatic sigma = -p(z) I, p = p0 + g z: div sigma = -g e_z, no hoop
-// imbalance; a = -g / rho e_z everywhere. Returns the mean a per column
-// (interior rows only).
-std::map<int, ColumnAcceleration> hydrostatic_column(double p0, double g, double spacing) {
+// The mean rho a per particle column (interior rows only) for a stress field sigma(r, z) set on
+// a square lattice of 0.3 m x 1 m in r-z.
+template <class StressField>
+std::map<int, ColumnAcceleration> column_accelerations(const StressField& sigma, double spacing) {
   Model model;
   model.run.mode = GeometryMode::axisymmetric;
   const double rho = 1000.0;
@@ -33,8 +33,7 @@ std::map<int, ColumnAcceleration> hydrostatic_column(double p0, double g, double
   sph.update_state(1e-12, 1e-12);
   auto& p = sph.particles();
   for (std::size_t i = 0; i < sph.size(); ++i) {
-    const double pressure = p0 + g * p.position[i][1];
-    p.stress[i] = SymTensor{-pressure, -pressure, -pressure, 0, 0, 0};
+    p.stress[i] = sigma(p.position[i][0], p.position[i][1]);
     p.stress_term[i] = p.stress[i] * (1.0 / p.density[i]);
   }
   sph.compute_accelerations();
@@ -52,6 +51,17 @@ std::map<int, ColumnAcceleration> hydrostatic_column(double p0, double g, double
     c.axial /= c.count;
   }
   return columns;
+}
+
+// Hydrostatic sigma = -p(z) I, p = p0 + g z: div sigma = -g e_z, no hoop
+// imbalance; a = -g / rho e_z everywhere.
+std::map<int, ColumnAcceleration> hydrostatic_column(double p0, double g, double spacing) {
+  return column_accelerations(
+      [&](double, double z) {
+        const double pressure = p0 + g * z;
+        return SymTensor{-pressure, -pressure, -pressure, 0, 0, 0};
+      },
+      spacing);
 }
 
 }  // namespace
@@ -128,4 +138,31 @@ TEST(SphAxis, PlaneShockMovesTheFirstColumnLikeTheSecond) {
        "first particle column at mid-height",
        "the second column's (a plane wave)", columns.at(1).displacement, columns.at(0).displacement, 0.05,
        true, "m"});
+}
+
+TEST(SphAxis, ShearGradientIsTheSameInEveryColumn) {
+  // sigma_rz = k r on a uniform pressure p0: (1/r) d(r sigma_rz)/dr = 2 k along z in every column,
+  // no radial force. The shear stress is what ties the first column's axial motion to the
+  // second's; the images across the axis carry it with its sign flipped twice (mirror and ring
+  // weight), so r sigma_rz continues evenly through r = 0.
+  const double p0 = 1e6, k = 1e6, spacing = 0.02;
+  const auto columns =
+      column_accelerations([&](double r, double) { return SymTensor{-p0, -p0, -p0, k * r, 0, 0}; }, spacing);
+  double worst_axial = 0.0, worst_radial = 0.0;
+  for (const auto& [col, c] : columns) {
+    std::printf("column %2d: rho a_r %+.4e  rho a_z %+.4e (expected 0, %+.4e)\n", col, c.radial, c.axial,
+                2.0 * k);
+    if (col > 12) continue;  // the free outer surface (r = 0.3 m) and its neighbour
+    const double r = (col + 0.5) * spacing;
+    if (col < 3) worst_axial = std::max(worst_axial, std::abs(c.axial / (2.0 * k) - 1.0));
+    worst_radial = std::max(worst_radial, std::abs(c.radial) * r / p0);
+  }
+  test::verify(
+      {"r-z SPH next to the axis, sigma_rz = k r: rho a_z of the first three particle columns, "
+       "largest relative error",
+       "2 k (exact)", 0.0, worst_axial, 0.02, false, "-"});
+  test::verify(
+      {"r-z SPH, sigma_rz = k r on a uniform pressure: radial force imbalance rho a_r r / p0, "
+       "largest over the columns up to 12 spacings from the axis",
+       "0", 0.0, worst_radial, 0.02, false, "-"});
 }

@@ -46,12 +46,12 @@ ProgressReporter::ProgressReporter(ProgressStyle style, double end_time)
 
 std::string ProgressReporter::format_line(double time, double end_time, std::int64_t cycle, double dt,
                                           const std::string& dt_reason, double energy_error,
-                                          double wall_seconds) {
-  // Remaining wall time by linear extrapolation in simulated time: explicit
+                                          double wall_seconds, double origin_time, double origin_wall) {
+  // Remaining wall time by linear extrapolation in simulated time from the origin: explicit
   // runs have a nearly constant dt, so cost is nearly proportional to time.
   std::string remaining = "?";
-  if (time > 0.0 && end_time > time)
-    remaining = format_duration(wall_seconds * (end_time - time) / time);
+  if (time > origin_time && end_time > time)
+    remaining = format_duration((wall_seconds - origin_wall) * (end_time - time) / (time - origin_time));
   else if (time >= end_time)
     remaining = format_duration(0.0);
   const double percent = end_time > 0.0 ? 100.0 * time / end_time : 0.0;
@@ -70,11 +70,13 @@ void ProgressReporter::update(double time, std::int64_t cycle, double dt, const 
   if (style_ == ProgressStyle::terminal) {
     if (!first && wall_seconds - last_terminal_wall_ < terminal_refresh_s) {
       pending_ = true;
-      last_line_ = fit(format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds),
+      last_line_ = fit(format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds,
+                                   origin_time_, origin_wall_),
                        terminal_columns(stream_));
       return;
     }
-    last_line_ = fit(format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds),
+    last_line_ = fit(format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds,
+                                 origin_time_, origin_wall_),
                      terminal_columns(stream_));
     // Pad with spaces so a shorter line fully covers the previous one.
     const std::size_t pad = last_width_ > last_line_.size() ? last_width_ - last_line_.size() : 0;
@@ -86,7 +88,8 @@ void ProgressReporter::update(double time, std::int64_t cycle, double dt, const 
     return;
   }
   // plain
-  last_line_ = format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds);
+  last_line_ = format_line(time, end_time_, cycle, dt, dt_reason, energy_error, wall_seconds, origin_time_,
+                           origin_wall_);
   if (first || wall_seconds - last_plain_wall_ >= log_interval_s_) {
     fmt::print(stream_, "{}\n", last_line_);
     std::fflush(stream_);

@@ -66,6 +66,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   EnergyGuard<D> energy_guard(model.run, solver);
   ProgressReporter progress(options.progress, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
+  progress.set_origin(solver.time(), wall());  // after a relaxation or at a restart's time
   RunSummary summary;
   const auto summarise = [&](std::string reason, bool failed) {
     summary.time = solver.time();

@@ -18,6 +18,15 @@ TEST(Progress, LineNamesTimeCycleDtReasonErrorAndRemaining) {
   EXPECT_NE(line.find("remaining 10.0s"), std::string::npos) << line;
 }
 
+TEST(Progress, RemainingTimeCountsFromTheOrigin) {
+  // A restart at 2 ms (or a relaxation that took 6 s of wall time before t = 0): 4 s of wall for
+  // 3 ms of simulated time since then, 5 ms to go: 6.7 s remain, not the 10 s that the whole
+  // elapsed time over the whole simulated time would give.
+  const std::string line = ProgressReporter::format_line(5e-3, 1e-2, 1234, 2.5e-7, "x", 0.0, 10.0, 2e-3, 6.0);
+  EXPECT_NE(line.find("remaining 6.7s"), std::string::npos) << line;
+  EXPECT_NE(line.find("elapsed 10.0s"), std::string::npos) << line;
+}
+
 TEST(Progress, DurationsReadable) {
   EXPECT_EQ(format_duration(6.71), "6.7s");
   EXPECT_EQ(format_duration(245.0), "4m05s");

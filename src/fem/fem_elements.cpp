@@ -281,7 +281,8 @@ void FemElements<D>::update_ring_factors(const double* x) {
   constexpr int N = nodes;
   // m_a / M_a: the node's mass over its area mass sum_e m_e / (N 2 pi r_bar_e),
   // the mass-weighted harmonic mean of its elements' ring weights 2 pi r_bar.
-  std::vector<double> area_mass(node_count_, 0.0);
+  std::vector<double>& area_mass = area_mass_;  // kept between cycles: no allocation in the cycle
+  area_mass.assign(node_count_, 0.0);
   ring_factor_.assign(node_count_, 0.0);
   for (std::size_t e = 0; e < size(); ++e) {
     if (eroded[e]) continue;

@@ -165,6 +165,7 @@ class FemElements {
   std::vector<double> pack_stored_;
   bool area_weighted_ = false;
   std::vector<double> ring_factor_;  // r-z area-weighted momentum: m_a / M_a per node
+  std::vector<double> area_mass_;    // scratch of update_ring_factors: sum_e m_e / (N 2 pi r_bar_e) per node
 };
 
 extern template class FemElements<2>;

@@ -3,7 +3,10 @@
 // prints ONE JSON line with the grind time.
 //
 //   camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly buffers|colours|colour_blocks]
-//   PROBLEM: taylor_bar | hex_impact | soil_axisymmetric | buried_coarse
+//   PROBLEM: taylor_bar | hex_impact | sedov_hex | soil_axisymmetric | buried_coarse
+// Each line also says what was measured and where: commit, build type and flags, compiler,
+// host and CPU model, thread count, the load average at the start, and the problem's
+// parameters (bench/bench_problems.hpp), so that a line read months later can be compared.
 // --assembly: how the FEM element forces are assembled on threads
 // (fem_elements.hpp, ForceAssembly); the line then carries an "assembly" key.
 //
@@ -15,6 +18,7 @@
 // first 3 cycles are warm-up and not counted.
 #include <omp.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -22,6 +26,7 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "bench_problems.hpp"
@@ -52,8 +57,45 @@ struct Result {
   long cycles = 0;
   double wall_s = 0.0, cpu_s = 0.0;
   double neighbours = -1.0;  // mean neighbours per particle (SPH only)
+  std::string parameters;    // the problem as built: resolution, material, steps, CFL
   std::string note;
 };
+
+// JSON string contents: quotes and backslashes escaped, control characters dropped.
+std::string json_text(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  }
+  return out;
+}
+
+std::string host_name() {
+  char name[256] = {};
+  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : "unknown";
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  return "unknown";
+}
+
+#ifndef CAMOUFLET_BENCH_COMMIT
+#define CAMOUFLET_BENCH_COMMIT "unknown"
+#endif
+#ifndef CAMOUFLET_BENCH_FLAGS
+#define CAMOUFLET_BENCH_FLAGS "unknown"
+#endif
+#ifndef CAMOUFLET_BENCH_BUILD_TYPE
+#define CAMOUFLET_BENCH_BUILD_TYPE "unknown"
+#endif
 
 double load_at_start = -1.0;
 const char* assembly_name = nullptr;  // --assembly, if given
@@ -69,8 +111,14 @@ void print(const Result& r, int threads) {
   if (r.neighbours >= 0.0)
     std::printf("\"mean_neighbours\":%.2f,\"ns_per_pair_cpu\":%.3f,", r.neighbours,
                 1e9 * r.cpu_s / (work * r.neighbours));
-  if (!r.note.empty()) std::printf("\"note\":\"%s\",", r.note.c_str());
+  if (!r.parameters.empty()) std::printf("\"parameters\":\"%s\",", json_text(r.parameters).c_str());
+  if (!r.note.empty()) std::printf("\"note\":\"%s\",", json_text(r.note).c_str());
   if (assembly_name) std::printf("\"assembly\":\"%s\",", assembly_name);
+  std::printf("\"commit\":\"%s\",\"build_type\":\"%s\",\"flags\":\"%s\",\"compiler\":\"%s\",",
+              json_text(CAMOUFLET_BENCH_COMMIT).c_str(), json_text(CAMOUFLET_BENCH_BUILD_TYPE).c_str(),
+              json_text(CAMOUFLET_BENCH_FLAGS).c_str(), json_text(__VERSION__).c_str());
+  std::printf("\"host\":\"%s\",\"cpu\":\"%s\",\"omp_max_threads\":%d,", json_text(host_name()).c_str(),
+              json_text(cpu_model()).c_str(), omp_get_max_threads());
   std::printf("\"peak_rss_mib\":%.1f,\"load_average\":%.2f}\n", static_cast<double>(u.ru_maxrss) / 1024.0,
               load_at_start);
   std::fflush(stdout);
@@ -101,12 +149,22 @@ Result taylor_bar(long size, long steps) {
   double neighbours = 0.0;
   for (int c : bar.particles().neighbour_count) neighbours += c;
   r.neighbours = neighbours / static_cast<double>(bar.size());
+  const bench::TaylorBar geometry;
+  char parameters[200];
+  std::snprintf(
+      parameters, sizeof parameters,
+      "copper bar R %.2f mm L %.1f mm at %.0f m/s, linear EOS + von Mises, spacing %.4g mm, smoothing "
+      "factor %.2f, CFL 0.3, %ld steps",
+      geometry.radius * 1e3, geometry.length * 1e3, geometry.speed,
+      geometry.spacing_for(size > 0 ? size : bench::taylor_bar_full_size) * 1e3,
+      bench::taylor_bar_options().smoothing_factor, steps);
+  r.parameters = parameters;
   r.note = "t_end " + std::to_string(t * 1e6) + " us";
   return r;
 }
 
 template <int D>
-Result fem_run(const std::string& name, const Model& model, long steps) {
+Result fem_run(const std::string& name, const std::string& parameters, const Model& model, long steps) {
   Solver<D> solver(model);
   for (int k = 0; k < 3; ++k) solver.step();
   const Timing start = Timing::now();
@@ -121,6 +179,8 @@ Result fem_run(const std::string& name, const Model& model, long steps) {
   char note[96];
   std::snprintf(note, sizeof note, "energy error %.2e", solver.energy().relative_error);
   r.note = note;
+  r.parameters = parameters + ", CFL " + std::to_string(model.run.cfl).substr(0, 4) + ", " +
+                 std::to_string(steps) + " steps";
   return r;
 }
 
@@ -142,6 +202,7 @@ bool buried_coarse(int threads, long steps, Result& r) {
   r.cycles = summary.cycles;
   r.wall_s = std::chrono::duration<double>(end.wall - start.wall).count();
   r.cpu_s = end.cpu - start.cpu;
+  r.parameters = "cases/wang2005/coarse.toml to 70 ms";
   r.note = "simulated " + std::to_string(summary.time * 1e3) + " ms, includes set-up";
   return true;
 }
@@ -150,7 +211,7 @@ int usage() {
   std::fprintf(stderr,
                "usage: camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly "
                "buffers|colours|colour_blocks]\n"
-               "  PROBLEM: taylor_bar | hex_impact | soil_axisymmetric | buried_coarse\n");
+               "  PROBLEM: taylor_bar | hex_impact | sedov_hex | soil_axisymmetric | buried_coarse\n");
   return 2;
 }
 
@@ -192,16 +253,25 @@ int main(int argc, char** argv) {
     if (problem == "taylor_bar") {
       r = taylor_bar(size > 0 ? size : bench::taylor_bar_full_size, steps > 0 ? steps : 500);
     } else if (problem == "hex_impact") {
-      r = fem_run<3>(problem, bench::hex_impact_model(size > 0 ? size : bench::hex_impact_full_size),
-                     steps > 0 ? steps : 200);
+      const long n = size > 0 ? size : bench::hex_impact_full_size;
+      r = fem_run<3>(problem,
+                     "steel cube 45 mm at 100 m/s onto a fixed face, hex8, " + std::to_string(n) + " asked",
+                     bench::hex_impact_model(n), steps > 0 ? steps : 200);
+    } else if (problem == "sedov_hex") {
+      const long n = size > 0 ? size : bench::sedov_full_size;
+      r = fem_run<3>(
+          problem,
+          "Sedov octant in ideal gas (LULESH's problem), edge 1.125, hex8, " + std::to_string(n) + " asked",
+          bench::sedov_hex_model(n), steps > 0 ? steps : 200);
     } else if (problem == "soil_axisymmetric") {
-      r = fem_run<2>(problem, bench::soil_axisymmetric_model(size > 0 ? size : bench::soil_full_size),
-                     steps > 0 ? steps : 500);
+      const long n = size > 0 ? size : bench::soil_full_size;
+      r = fem_run<2>(problem, "r-z sandy clay 1 m x 2 m under 20 MPa, quad4, " + std::to_string(n) + " asked",
+                     bench::soil_axisymmetric_model(n), steps > 0 ? steps : 500);
     } else if (problem == "buried_coarse") {
       if (!buried_coarse(threads, steps, r)) {
         std::printf(
             "{\"problem\":\"buried_coarse\",\"threads\":%d,\"skipped\":\"cases/wang2005/coarse.toml "
-            "not found (branch buried has not landed it)\"}\n",
+            "not found (run from the repository root)\"}\n",
             threads);
         return 0;
       }

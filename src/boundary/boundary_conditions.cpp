@@ -84,7 +84,7 @@ BoundaryConditions<D>::BoundaryConditions(const Model& model)
         break;
       }
       case BoundaryKind::transmitting:
-        break;  // dashpots on faces: coupling/transmitting_boundary.hpp
+        break;  // dashpots on faces: boundary/transmitting_boundary.hpp
     }
   }
   orthogonalise_planes();

@@ -130,10 +130,10 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
                  "warning: [sph] volume_form = false in r-z: the particle columns next to the axis feel a "
                  "stress divergence up to ~1.4x too large (mirror images with |r| ring weights; "
                  "docs/theory/sph.md, \"The first columns\")\n");
-    particles_ = std::make_unique<sph::SphSystem<D>>(model, options, particle_planes());
+    particles_ = std::make_unique<sph::SphSystem<D>>(model, options, sph::symmetry_mirror_planes(model));
     if (!model.joins.empty()) {
       // The same planes as the particles' mirrors, axis first (SphSystem's order).
-      std::vector<sph::MirrorPlane> planes = particle_planes();
+      std::vector<sph::MirrorPlane> planes = sph::symmetry_mirror_planes(model);
       if (mode_ == GeometryMode::axisymmetric)
         planes.insert(planes.begin(), sph::MirrorPlane{0, 0.0, sph::PlaneKind::axis});
       join_ = std::make_unique<SphFemJoin<D>>(model, elements_, position_.data(), velocity_.data(),
@@ -182,32 +182,6 @@ void Solver<D>::start_energy_and_step() {
   energy_.internal = internal_energy_;
   // The stiffness-form hourglass energy is nought at t = 0 unless a relaxation stored some.
   energy_.initial_total = kinetic + internal_energy_ + hourglass_stored_;
-}
-
-template <int D>
-std::vector<sph::MirrorPlane> Solver<D>::particle_planes() const {
-  // A symmetry boundary whose normal is a coordinate axis and whose node set
-  // lies on one plane is also a mirror plane for particles. (The axis of an
-  // axisymmetric model is added by SphSystem itself.)
-  std::vector<sph::MirrorPlane> planes;
-  for (const BoundaryCondition& bc : model_.boundaries) {
-    if (bc.kind != BoundaryKind::symmetry) continue;
-    int axis = -1;
-    for (int i = 0; i < D; ++i)
-      if (std::abs(bc.normal[static_cast<std::size_t>(i)]) > 0.999) axis = i;
-    const auto set = model_.mesh.node_sets.find(bc.set);
-    if (axis < 0 || set == model_.mesh.node_sets.end() || set->second.empty()) continue;
-    const double position = model_.mesh.coordinates[static_cast<std::size_t>(set->second.front() * D + axis)];
-    if (mode_ == GeometryMode::axisymmetric && axis == 0 && std::abs(position) < 1e-12) continue;
-    // One plane once, however many sets (e.g. one per block) it is split into:
-    // a repeated plane would mirror each particle again (a ghost of a ghost).
-    const auto same = [&](const sph::MirrorPlane& p) {
-      return p.axis == axis && std::abs(p.position - position) <= 1e-9 * (1.0 + std::abs(position));
-    };
-    if (std::any_of(planes.begin(), planes.end(), same)) continue;
-    planes.push_back({axis, position, sph::PlaneKind::symmetry});
-  }
-  return planes;
 }
 
 template <int D>
@@ -301,7 +275,7 @@ void Solver<D>::advance_velocities() {
 template <int D>
 void Solver<D>::constrain_velocities() {
   const double dt_mean = 0.5 * (dt_ + dt_next_);
-  // Transmitting boundaries first: centred dashpots on v(n+1/2) (coupling/transmitting_boundary.hpp).
+  // Transmitting boundaries first: centred dashpots on v(n+1/2) (boundary/transmitting_boundary.hpp).
   if (relaxing_) hold_charges_still();
   if (!transmitting_.empty() && relaxing_) {
     transmitting_.hold_still(velocity_.data());

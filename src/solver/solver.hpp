@@ -17,7 +17,7 @@
 #include "core/state_visitor.hpp"
 #include "coupling/sliding_contact.hpp"
 #include "coupling/sph_fem_join.hpp"
-#include "coupling/transmitting_boundary.hpp"
+#include "boundary/transmitting_boundary.hpp"
 #include "fem/embedded_bars.hpp"
 #include "fem/fem_elements.hpp"
 #include "materials/material_points.hpp"
@@ -146,7 +146,6 @@ class Solver {
   [[noreturn]] void fail_node(std::int64_t n) const;  // 0-based; non-finite or outside the box
   void check_axis_crossings();                        // r-z: nodes moved to r < 0, reported (a warning)
   std::string describe(EntityKind kind, std::int64_t id) const;
-  std::vector<sph::MirrorPlane> particle_planes() const;
 
   const Model& model_;
   GeometryMode mode_;

@@ -30,7 +30,7 @@
 // and Garcia-Senz, Relano, Cabezon & Bravo (2009, MNRAS 392, 346; "AxisSPH",
 // Relano 2012): the 2-D kernel sums act on eta = 2 pi r rho, and the hoop
 // terms come from writing the r-z divergence of the stress as
-// div(r sigma) - sigma_tt e_r. The axis is a mirror plane (mirror_boundary.hpp).
+// div(r sigma) - sigma_tt e_r. The axis is a mirror plane (boundary/mirror_planes.hpp).
 //
 // Stages of one cycle (the solver, or step() for pure-SPH runs, calls them in order):
 //   compute_accelerations()  forces at x(n) with sigma(n)       -> a(n)
@@ -53,7 +53,7 @@
 #include "output/snapshot.hpp"
 #include "model/run_summary.hpp"
 #include "sph/kernel.hpp"
-#include "sph/mirror_boundary.hpp"
+#include "boundary/mirror_planes.hpp"
 #include "sph/neighbour_search.hpp"
 #include "sph/pair_point.hpp"
 #include "sph/sph_options.hpp"

@@ -24,7 +24,7 @@
 
 #include "common/verification.hpp"
 #include "materials/registry.hpp"
-#include "sph/mirror_boundary.hpp"
+#include "boundary/mirror_planes.hpp"
 #include "sph_test_models.hpp"
 
 using namespace camouflet;

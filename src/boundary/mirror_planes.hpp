@@ -25,6 +25,7 @@
 
 #include "core/sym_tensor.hpp"
 #include "core/vec.hpp"
+#include "model/model.hpp"
 
 namespace camouflet::sph {
 
@@ -65,6 +66,13 @@ inline SymTensor mirror_tensor(SymTensor s, int axis) {
   if (axis == 2) s.yz = -s.yz, s.zx = -s.zx;
   return s;
 }
+
+// The particles' side of the model's symmetry boundaries: each symmetry condition whose normal
+// is a coordinate axis and whose node set lies on one plane constrains its nodes
+// (boundary_conditions.hpp) and mirrors the particles in that plane. Each plane once, however
+// many sets it is split into. The axis of an r-z model is not among them: SphSystem adds it
+// (PlaneKind::axis).
+std::vector<MirrorPlane> symmetry_mirror_planes(const Model& model);
 
 // Ghost list for points x (the first n_real are particles): every point whose
 // distance to a plane is below `reach` (m) is mirrored, planes in order.

@@ -1,4 +1,4 @@
-#include "coupling/transmitting_boundary.hpp"
+#include "boundary/transmitting_boundary.hpp"
 
 #include <fmt/format.h>
 

@@ -95,6 +95,12 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "preset", s.soil, s);
     read(*t, "wave_speed", s.soil_wave_speed, s);
     read_hourglass(*t, s.soil_hourglass, s.soil_hourglass_coefficient, s);
+    if (auto e = t->table("erosion")) {
+      s.where[t->key_path("erosion")] = t->where("erosion");
+      s.soil_erosion_strain = e->positive("geometric_strain");
+      s.where[e->key_path("geometric_strain")] = e->where("geometric_strain");
+      e->finish();
+    }
     t->finish();
   }
   if (auto t = root.table("domain")) {

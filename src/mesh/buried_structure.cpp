@@ -566,8 +566,11 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
                  s.soil_hourglass, s.soil_hourglass_kappa());
   fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
                  s.gauge_interval);
-  fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n\n[materials.charge]\npreset = \"{}\"\n\n", s.soil,
-                 s.explosive);
+  fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n", s.soil);
+  if (s.soil_erosion_strain > 0.0)
+    fmt::format_to(out, "erosion = {{ geometric_strain = {} }}  # soil.erosion: FEM soil elements only\n",
+                   s.soil_erosion_strain);
+  fmt::format_to(out, "\n[materials.charge]\npreset = \"{}\"\n\n", s.explosive);
   fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
   if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
 }

@@ -77,6 +77,10 @@ struct BuriedStructureSpec {
   double hourglass_coefficient = 0.1;
   std::string soil_hourglass = "stiffness", structure_hourglass = "stiffness";
   double soil_hourglass_coefficient = 0.0, structure_hourglass_coefficient = 0.0;
+  // Geometric-strain erosion of the FEM soil (`soil.erosion = { geometric_strain = ... }`; 0: none),
+  // written on [materials.soil]: elements thrown clear with the crater's ejecta and stretched past
+  // it stop setting the time step (docs/buried-structure.md, "coarse3d").
+  double soil_erosion_strain = 0.0;
   double soil_hourglass_kappa() const {
     return soil_hourglass_coefficient > 0.0 ? soil_hourglass_coefficient : hourglass_coefficient;
   }

@@ -2,7 +2,8 @@
 // and `structure.hourglass` ({ form, coefficient }). Their defaults write the
 // case as before (stiffness, 0.1 for all: the committed cases stay valid); a
 // box form other than the soil's goes on every concrete part; bad values are
-// refused naming the key.
+// refused naming the key. The soil's erosion key (`soil.erosion`) is checked here too: it is the
+// other per-soil numerics key of the generator.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -97,6 +98,31 @@ TEST(BuriedHourglassKeys, ThreeDimensionalCaseCarriesTheBoxForm) {
   EXPECT_NE(text.find("hourglass = { form = \"viscous\", coefficient = 0.1 }"), std::string::npos);
 }
 
+int material_index(const Model& model, const std::string& name) {
+  for (std::size_t m = 0; m < model.materials.size(); ++m)
+    if (model.materials[m].name == name) return static_cast<int>(m);
+  ADD_FAILURE() << "no material " << name;
+  return -1;
+}
+
+TEST(BuriedHourglassKeys, SoilErosionGoesOnTheSoilMaterialOnly) {
+  const Model plain = read_case_text(buried_structure_case(spec_of(""), "t"), "plain.toml");
+  for (std::size_t m = 0; m < plain.materials.size(); ++m)
+    EXPECT_FALSE(plain.erosion_of(m).enabled()) << plain.materials[m].name;
+  const Model eroding = read_case_text(
+      buried_structure_case(spec_of("[soil]\nerosion = { geometric_strain = 1.5 }\n"), "t"), "eroding.toml");
+  for (std::size_t m = 0; m < eroding.materials.size(); ++m) {
+    const ErosionCriteria e = eroding.erosion_of(m);
+    if (eroding.materials[m].name == "soil") {
+      EXPECT_EQ(e.geometric_strain, 1.5);
+      EXPECT_EQ(e.damage, 0.0);
+    } else {
+      EXPECT_FALSE(e.enabled()) << eroding.materials[m].name;
+    }
+  }
+  EXPECT_GE(material_index(eroding, "soil"), 0);
+}
+
 void expect_params_refused(const std::string& extra, const std::string& key, const std::string& fragment) {
   try {
     layout_buried_structure(spec_of(extra));
@@ -122,6 +148,9 @@ TEST(BuriedHourglassKeys, BadValuesAreRefusedNamingTheKey) {
   expect_params_refused("[structure]\nhourglass = \"viscous\"\n", "structure.hourglass", "expected a table");
   expect_params_refused("[soil]\nhourglass = { form = \"viscous\", coef = 0.1 }\n", "soil.hourglass.coef",
                         "");
+  expect_params_refused("[soil]\nerosion = { geometric_strain = 0.0 }\n", "soil.erosion.geometric_strain",
+                        "");
+  expect_params_refused("[soil]\nerosion = { strain = 1.5 }\n", "soil.erosion.geometric_strain", "");
 }
 
 }  // namespace

@@ -15,16 +15,24 @@
 // first columns next to the axis"), and its test is disabled until the axis
 // treatment meets it. The buried cases' first column runs ahead later (5-10
 // ms), beyond this quick comparison.
+//
+// One run of either model is not a measurement: the detonation's push into the
+// damaged soil amplifies round-off, and a change of the CFL number by 1e-4 (or
+// another build's SIMD width) moves a column's displacement by up to 5 %. So
+// each model is run at five CFL numbers within 2e-4 of 0.5, and the ensemble
+// means are compared; the spread is recorded beside them.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <vector>
 
+#include "boundary/mirror_planes.hpp"
 #include "common/verification.hpp"
 #include "materials/registry.hpp"
-#include "boundary/mirror_planes.hpp"
 #include "sph_test_models.hpp"
 
 using namespace camouflet;
@@ -93,7 +101,7 @@ std::pair<double, double> fit2(const std::vector<double>& f, const std::vector<d
 }
 
 template <int D>
-ColumnMotion run_column_motion() {
+ColumnMotion run_column_motion(double cfl) {
   const Model model = buried_charge_model<D>();
   SphOptions options;
   options.viscosity_alpha = 0.2;  // as the generated buried cases
@@ -102,7 +110,7 @@ ColumnMotion run_column_motion() {
   SphSystem<D> sph(model, options, planes);
   const double e0 = sph.kinetic_energy() + sph.internal_energy();
   double dt_last = 0.0;
-  const long cycles = test::run_leapfrog_until(sph, kEnd, 0.5, &dt_last);
+  const long cycles = test::run_leapfrog_until(sph, kEnd, cfl, &dt_last);
   const double e_end = test::synchronised_kinetic_energy(sph, dt_last) + sph.internal_energy();
   ColumnMotion out;
   out.energy_error = e_end / e0 - 1.0;
@@ -152,28 +160,70 @@ ColumnMotion run_column_motion() {
 
 }  // namespace
 
-// Both runs once, shared by the tests below (15 s on one core).
-const std::pair<ColumnMotion, ColumnMotion>& runs() {
-  static const std::pair<ColumnMotion, ColumnMotion> both{run_column_motion<2>(), run_column_motion<3>()};
+// Ensemble means of each model's column motion over CFL numbers within 2e-4 of 0.5, with the
+// spread (largest minus smallest over the mean) of each column's displacements.
+struct Ensemble {
+  ColumnMotion mean;
+  double uz_spread[3] = {}, ur_spread[3] = {};
+  double worst_energy_error = 0.0;
+};
+
+template <int D>
+Ensemble ensemble() {
+  const double cfls[] = {0.4998, 0.4999, 0.5, 0.5001, 0.5002};
+  Ensemble e;
+  double uz_min[3], uz_max[3], ur_min[3], ur_max[3];
+  for (int c = 0; c < 3; ++c) uz_min[c] = ur_min[c] = 1e30, uz_max[c] = ur_max[c] = -1e30;
+  for (const double cfl : cfls) {
+    const ColumnMotion m = run_column_motion<D>(cfl);
+    e.worst_energy_error = std::max(e.worst_energy_error, std::abs(m.energy_error));
+    for (int c = 0; c < 3; ++c) {
+      e.mean.uz[c] += m.uz[c] / std::size(cfls);
+      e.mean.ur[c] += m.ur[c] / std::size(cfls);
+      uz_min[c] = std::min(uz_min[c], m.uz[c]), uz_max[c] = std::max(uz_max[c], m.uz[c]);
+      ur_min[c] = std::min(ur_min[c], m.ur[c]), ur_max[c] = std::max(ur_max[c], m.ur[c]);
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    e.uz_spread[c] = (uz_max[c] - uz_min[c]) / std::abs(e.mean.uz[c]);
+    e.ur_spread[c] = (ur_max[c] - ur_min[c]) / std::abs(e.mean.ur[c]);
+  }
+  return e;
+}
+
+// Both ensembles once, shared by the tests below (about 3 min on one core).
+const std::pair<Ensemble, Ensemble>& runs() {
+  static const std::pair<Ensemble, Ensemble> both{ensemble<2>(), ensemble<3>()};
   return both;
 }
 
-// Measured at main d47382d, 2 Dec 2026, 1 ms: u_z r-z / 3-D = 0.954, 0.984, 1.048 in columns 1-3;
-// u_r r-z / 3-D = 0.869, 0.704, 0.813 (the r-z soil next to the axis moves outwards too little).
+// Single runs at main d47382d, 2 Dec 2026, 1 ms: u_z r-z / 3-D = 0.954, 0.984, 1.048 in columns
+// 1-3; u_r r-z / 3-D = 0.869, 0.704, 0.813. On another machine the same code gave 1.017, 0.944
+// (a 5.6 % miss), 1.056: the round-off spread, hence the ensembles.
 TEST(SphAxisReference, AxialMotionOfTheFirstColumnsAsInThreeDimensions) {
   const auto& [rz, ref] = runs();
   // The reference itself: it conserves energy, and its charge drove the soil below it down and out.
-  EXPECT_LT(std::abs(ref.energy_error), 0.01);
-  EXPECT_LT(ref.uz[0], 0.0);
-  EXPECT_GT(ref.ur[2], 0.0);
+  EXPECT_LT(ref.worst_energy_error, 0.01);
+  EXPECT_LT(ref.mean.uz[0], 0.0);
+  EXPECT_GT(ref.mean.ur[2], 0.0);
   for (int c = 0; c < 3; ++c) {
-    std::printf("column %d: u_z r-z / 3-D = %.3f, u_r r-z / 3-D = %.3f\n", c + 1, rz.uz[c] / ref.uz[c],
-                rz.ur[c] / ref.ur[c]);
+    std::printf(
+        "column %d: mean u_z r-z / 3-D = %.3f (spread %.3f / %.3f), mean u_r r-z / 3-D = %.3f "
+        "(spread %.3f / %.3f)\n",
+        c + 1, rz.mean.uz[c] / ref.mean.uz[c], rz.uz_spread[c], ref.uz_spread[c],
+        rz.mean.ur[c] / ref.mean.ur[c], rz.ur_spread[c], ref.ur_spread[c]);
     test::verify({fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms: axial displacement of r-z column {} "
-                              "(2.5-6 charge radii below the charge)",
+                              "(2.5-6 charge radii below the charge), mean of 5 runs at CFL 0.5 +- 2e-4",
                               c + 1),
-                  "the same problem in 3-D (quarter model, no axis), within 5 %", ref.uz[c], rz.uz[c], 0.05,
-                  true, "m"});
+                  "the same problem in 3-D (quarter model, no axis), mean of 5 runs, within 5 %",
+                  ref.mean.uz[c], rz.mean.uz[c], 0.05, true, "m"});
+    test::record_observation(
+        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms: spread of the axial displacement of column {} "
+                    "over the 5 runs (r-z; 3-D)",
+                    c + 1),
+        "below the 5 % of the comparison",
+        fmt::format("{:.3f}; {:.3f} of the mean", rz.uz_spread[c], ref.uz_spread[c]),
+        rz.uz_spread[c] < 0.05 && ref.uz_spread[c] < 0.05);
   }
 }
 
@@ -181,8 +231,9 @@ TEST(SphAxisReference, AxialMotionOfTheFirstColumnsAsInThreeDimensions) {
 TEST(SphAxisReference, DISABLED_RadialMotionOfTheFirstColumnsAsInThreeDimensions) {
   const auto& [rz, ref] = runs();
   for (int c = 0; c < 3; ++c)
-    test::verify(
-        {fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms: radial displacement of r-z column {}", c + 1),
-         "the same problem in 3-D (quarter model, no axis), within 5 %", ref.ur[c], rz.ur[c], 0.05, true,
-         "m"});
+    test::verify({fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms: radial displacement of r-z column {}, "
+                              "mean of 5 runs",
+                              c + 1),
+                  "the same problem in 3-D (quarter model, no axis), mean of 5 runs, within 5 %",
+                  ref.mean.ur[c], rz.mean.ur[c], 0.05, true, "m"});
 }

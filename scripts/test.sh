@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds Camouflet (installing what is missing) and runs the whole test suite,
-# the quick tests and the "long" label (about 5 minutes of tests on 2 cores),
+# the quick tests and the "long" label (about 10 minutes of tests on 2 cores),
 # then regenerates docs/verification-report.md from what ran.
 # Quick tests only: scripts/test.sh -LE long   (extra args go to ctest)
 set -euo pipefail

@@ -1,5 +1,5 @@
 // Gravity: the body force m g on every node and particle, and the static load that transmitting
-// boundaries carry under it (docs/theory/gravity.md).
+// boundaries carry under it or after a dynamic relaxation (docs/theory/gravity.md).
 #include <cstddef>
 #include <cstdint>
 

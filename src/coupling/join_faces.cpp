@@ -68,14 +68,14 @@ Vec<D> unit(Vec<D> v) {
 }  // namespace
 
 template <int D>
-void SphFemJoin<D>::update_face_geometry() {
+void SphFemJoin<D>::update_face_geometry(const double* xn) {
   face_centre_.assign(faces_.size(), Vec<D>{});
   face_normal_.assign(faces_.size(), Vec<D>{});
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const auto& q = faces_[f];
     Vec<D> x[face_nodes];
     for (int a = 0; a < face_nodes; ++a)
-      for (int d = 0; d < D; ++d) x[a][d] = x_[q[static_cast<std::size_t>(a)] * D + d];
+      for (int d = 0; d < D; ++d) x[a][d] = xn[q[static_cast<std::size_t>(a)] * D + d];
     Vec<D> centre{};
     for (int a = 0; a < face_nodes; ++a) centre = centre + x[a] * (1.0 / face_nodes);
     Vec<D> n{};
@@ -89,27 +89,27 @@ void SphFemJoin<D>::update_face_geometry() {
       n[2] = p[0] * r[1] - p[1] * r[0];
     }
     // Oriented out of its element, towards the particles.
-    if (dot(n, centre - element_centre(static_cast<std::size_t>(face_element_[f]))) < 0.0) n = n * -1.0;
+    if (dot(n, centre - element_centre(static_cast<std::size_t>(face_element_[f]), xn)) < 0.0) n = n * -1.0;
     face_centre_[f] = centre;
     face_normal_[f] = unit(n);
   }
 }
 
 template <int D>
-void SphFemJoin<D>::find_corner_faces(double reach) {
+void SphFemJoin<D>::find_corner_faces(const double* x) {
   // Faces within reach of a point whose normal differs from its own face's by more than ~25
   // degrees, grouped by orientation (at most D groups, the point's face's first).
   corner_faces_.clear();
   corner_group_.clear();
   for (Point& pt : points_) {
-    const Vec<D> c = interpolate(x_, pt);
+    const Vec<D> c = interpolate(x, pt);
     std::vector<Vec<D>> groups{face_normal_[pt.face]};
     const std::size_t first = corner_faces_.size();
     corner_faces_.push_back(pt.face);
     corner_group_.push_back(0);
     for (std::size_t f = 0; f < faces_.size(); ++f) {
       const Vec<D> d = face_centre_[f] - c;
-      if (f == pt.face || dot(d, d) >= reach * reach) continue;
+      if (f == pt.face || dot(d, d) >= reach_ * reach_) continue;
       std::size_t g = 0;
       while (g < groups.size() && dot(groups[g], face_normal_[f]) < 0.9) ++g;
       if (g == groups.size()) {
@@ -177,10 +177,10 @@ typename SphFemJoin<D>::ReactionParts SphFemJoin<D>::split_reaction(const Point&
   return parts;
 }
 
-template void SphFemJoin<2>::update_face_geometry();
-template void SphFemJoin<3>::update_face_geometry();
-template void SphFemJoin<2>::find_corner_faces(double);
-template void SphFemJoin<3>::find_corner_faces(double);
+template void SphFemJoin<2>::update_face_geometry(const double*);
+template void SphFemJoin<3>::update_face_geometry(const double*);
+template void SphFemJoin<2>::find_corner_faces(const double*);
+template void SphFemJoin<3>::find_corner_faces(const double*);
 template SphFemJoin<2>::ReactionParts SphFemJoin<2>::split_reaction(const Point&, const Vec<2>&) const;
 template SphFemJoin<3>::ReactionParts SphFemJoin<3>::split_reaction(const Point&, const Vec<3>&) const;
 

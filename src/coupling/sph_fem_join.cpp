@@ -28,12 +28,12 @@ std::int64_t cell_key(const Vec<D>& x, double cell, const std::array<int, 3>& of
 }  // namespace
 
 template <int D>
-Vec<D> SphFemJoin<D>::element_centre(std::size_t e) const {
+Vec<D> SphFemJoin<D>::element_centre(std::size_t e, const double* x) const {
   constexpr int N = FemElements<D>::nodes;
   Vec<D> c{};
   for (int a = 0; a < N; ++a) {
     const std::int64_t n = elements_->connectivity[e * N + static_cast<std::size_t>(a)];
-    for (int i = 0; i < D; ++i) c[i] += x_[n * D + i] / N;
+    for (int i = 0; i < D; ++i) c[i] += x[n * D + i] / N;
   }
   return c;
 }
@@ -175,9 +175,10 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
     if (nearest_particle(sub_where[c], 1) >= 0) points_.push_back(subs[c]);
   compute_normalisation(particles, subs, sub_where, reach);
   // Interface faces: boundary faces of the joined elements with a particle just outside them.
+  reach_ = reach;
   find_interface_faces(model, elements, particles, bins, reach);
-  update_face_geometry();
-  find_corner_faces(reach);
+  update_face_geometry(x_);
+  find_corner_faces(x_);
   if (points_.empty() || faces_.empty()) {
     const Join& join = model.joins.front();
     throw InputError(join.where,
@@ -185,6 +186,7 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
                                  "particles of part '{}': the parts are not adjacent",
                                  reach, model.parts[static_cast<std::size_t>(join.sph_part)].name));
   }
+  keep_setup_interface();
   particles.set_external_points(points_.size(),
                                 [this](sph::ParticleArrays<D>& p, std::size_t begin) { fill(p, begin); });
 }
@@ -327,6 +329,22 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
   for (std::size_t k = 0; k < points_.size(); ++k) {
     const Point& pt = points_[k];
     const std::size_t e = pt.element;
+    const std::size_t j = begin + k;
+    if (el.eroded[e]) {
+      // Out of the sums: no mass, so no pair with it has a force, a density or a volume. It
+      // stays where it was set up, so that its node's flight does not renew the neighbour lists.
+      p.position[j] = image(interpolate(x_setup_.data(), pt), pt);
+      p.velocity[j] = Vec<D>{};
+      p.mass[j] = 0.0;
+      p.planar_density[j] = pt.rho0;
+      p.smoothing_length[j] = pt.h0;
+      p.stress_term[j] = SymTensor{};
+      p.tensile_term[j] = SymTensor{};
+      p.wave_speed[j] = 0.0;
+      p.viscosity_alpha[j] = options_.viscosity_alpha_min;
+      p.correction[j] = SymTensor::identity();
+      continue;
+    }
     Vec<D> c = interpolate(x_, pt), vel = interpolate(v_, pt);
     // The stress the element's own nodal forces use: sigma - q I (fem_elements.cpp). Without q
     // the particles would see a different traction than the FEM transmits.
@@ -360,7 +378,6 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
     if (options_.variable_smoothing_length && rho > 0.0)
       h = std::clamp(pt.h0 * std::pow(pt.rho0 / rho, 1.0 / D), options_.h_min_factor * pt.h0,
                      options_.h_max_factor * pt.h0);
-    const std::size_t j = begin + k;
     p.position[j] = c;
     p.velocity[j] = vel;
     p.mass[j] = mass;
@@ -396,7 +413,7 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
   pairs_.clear();
-  if (!corner_faces_.empty()) update_face_geometry();  // read only by split_reaction at corners
+  if (!corner_faces_.empty()) update_face_geometry(x_);  // read only by split_reaction at corners
   // r-z: the ring radius of each point's element at the point (an image keeps its element's).
   if (axisymmetric_) {
     ring_.resize(points_.size());
@@ -404,7 +421,7 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
   }
   for (std::size_t i = 0; i < p.real; ++i) {
     for (const std::uint32_t j : particles.neighbours().neighbours(i)) {
-      if (j < begin || j >= end) continue;
+      if (j < begin || j >= end || p.mass[j] == 0.0) continue;  // massless: an eroded element's point
       const Vec<D> dx = p.position[i] - p.position[j];
       const double r2 = dot(dx, dx);
       const double hij = sph::pair_smoothing_length(p.smoothing_length[i], p.smoothing_length[j]);

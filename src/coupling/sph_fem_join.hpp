@@ -38,6 +38,9 @@
 // face that takes its reaction, are the "join work", which the solver adds to the boundary work of the energy
 // balance. It is the join's real energy error (the formulation conserves momentum, not energy): -0.6 to -0.8
 // % of a 20-cell pulse over two crossings in plane strain, r-z and 3-D (tests/coupling/test_join.cpp).
+// Erosion (join_erosion.cpp): an eroded element's points leave the sums and its faces leave the interface;
+// the faces it shared with live joined elements take their place, so that no node left without an element
+// keeps taking reactions.
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -79,6 +82,11 @@ class SphFemJoin {
   // sum (F . v_j + R . v_face) dt, R = -F but for the r-z ring weights (J,
   // centred velocities; docs/theory/coupling.md).
   double face_offset_work() const { return face_offset_work_; }
+  // After elements eroded (FemElements::eroded), and after a restore: the interface as the erosion
+  // leaves it (join_erosion.cpp). A pure function of the eroded flags and the set-up geometry, so a
+  // restarted run rebuilds the same interface.
+  void follow_erosion();
+  std::size_t face_count() const { return faces_.size(); }
 
  private:
   struct Point {
@@ -111,10 +119,11 @@ class SphFemJoin {
     double power_old = 0.0;    // W, force . v_j + sum reaction . v_face at n-1/2
   };
   Vec<D> face_velocity(std::size_t face) const;  // mean of the face nodes' v_ (real frame)
-  // join_faces.cpp: the interface faces' current centres and normals (towards the particles), the
-  // faces of other orientations within reach of each point (corners), and the split of a reaction.
-  void update_face_geometry();
-  void find_corner_faces(double reach);
+  // join_faces.cpp: the interface faces' centres and normals (towards the particles) at node
+  // positions x (n*D), the faces of other orientations within reach of each point (corners), and the
+  // split of a reaction.
+  void update_face_geometry(const double* x);
+  void find_corner_faces(const double* x);
   ReactionParts split_reaction(const Point& point, const Vec<D>& reaction) const;
   std::vector<std::int64_t> face_element_;         // the joined element each face bounds
   std::vector<Vec<D>> face_centre_, face_normal_;  // m, unit; at the last update_face_geometry()
@@ -132,8 +141,18 @@ class SphFemJoin {
                             const sph::SphSystem<D>& particles,
                             const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,
                             double reach);
-  Vec<D> element_centre(std::size_t e) const;
+  Vec<D> element_centre(std::size_t e, const double* x) const;        // at node positions x (n*D)
+  Vec<D> element_centre(std::size_t e) const { return element_centre(e, x_); }
   Vec<D> interpolate(const double* field, const Point& point) const;  // node field (n*D) at the point
+  // join_erosion.cpp: the set-up interface and the face neighbours of the joined elements.
+  void keep_setup_interface();
+  std::vector<std::array<std::int64_t, face_nodes>> setup_faces_;  // the interface before any erosion
+  std::vector<std::int64_t> setup_face_element_;
+  std::vector<std::size_t> setup_point_face_;  // per point, into setup_faces_
+  std::vector<double> x_setup_;                // m, node positions at set-up (n*D)
+  std::vector<std::int64_t> neighbour_;        // per joined element and local face: the element across (-1)
+  std::vector<char> joined_element_;           // 1: the element belongs to a joined part
+  double reach_ = 0.0;                         // m, as at set-up
   Vec<D> image(Vec<D> x, const Point& point) const;
 
   const FemElements<D>* elements_ = nullptr;

@@ -32,6 +32,7 @@ void Solver<D>::update_bars() {
 template <int D>
 void Solver<D>::erode_elements() {
   if (!erosion_) return;
+  const std::size_t eroded_before = eroded_count_;
   const std::size_t ne = elements_.size();
   for (std::size_t e = 0; e < ne; ++e) {
     if (elements_.eroded[e]) continue;
@@ -62,6 +63,8 @@ void Solver<D>::erode_elements() {
     elements_.viscosity[e] = 0.0;
     ++eroded_count_;
   }
+  // The SPH-FEM interface loses the eroded elements' faces and gains those they exposed.
+  if (join_ && eroded_count_ != eroded_before) join_->follow_erosion();
 }
 
 #define CAMOUFLET_INSTANTIATE_REINFORCEMENT(D)    \

@@ -207,7 +207,7 @@ void Solver<D>::step() {
     element_kinematics();    // V, rho at t_(n+1); D, W, q at mid-step (SPH kinematics beside it)
     update_materials();      // EOS + strength + damage, one call per material batch
     update_bars();           // embedded bars: uniaxial-stress material update
-    erode_elements();        // elements past their material's erosion threshold
+    erode_elements();        // elements past their material's erosion threshold (the join follows)
     gather_element_state();  // sigma = s - p I, wave speeds, internal energy, dt vote
     choose_time_step();      // dt(n+3/2) = CFL min l / (c + |v|), growth limited
   } catch (NumericalError& error) {

@@ -86,6 +86,8 @@ void Solver<D>::visit_state(StateVisitor& v) {
   transmitting_.visit_state(v);
   if (particles_) particles_->visit_state(v);
   bars_.visit_state(v);
+  // The join's interface is a function of the eroded flags (coupling/join_erosion.cpp).
+  if (join_ && v.loading()) join_->follow_erosion();
 }
 
 template void Solver<2>::visit_state(StateVisitor&);

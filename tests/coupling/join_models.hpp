@@ -4,6 +4,8 @@
 // along the column, laterally confined (symmetry planes, or the axis and a
 // roller in r-z), driven by a sin^2 velocity pulse at the near end and
 // absorbed by a transmitting boundary at the far end.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -56,6 +58,38 @@ inline ParticleFillSpec zone_box(Model& model, double spacing, std::array<double
   fill.region.min = min;
   fill.region.max = max;
   return fill;
+}
+
+// Gives the element of `model` whose centre is `centre` (m) a part and material of its own: a copy of
+// material 0 that erodes past `geometric_strain`, its part joined as the FEM parts around the zone are.
+// Returns the element's index (model.mesh.element_count() when no centre matches within 1e-6 m).
+inline std::size_t make_element_erode(Model& model, std::array<double, 3> centre, double geometric_strain) {
+  const std::size_t npe = static_cast<std::size_t>(model.mesh.nodes_per_element);
+  const std::size_t d = static_cast<std::size_t>(model.mesh.dimension);
+  std::size_t found = model.mesh.element_count();
+  for (std::size_t e = 0; e < model.mesh.element_count(); ++e) {
+    double miss = 0.0;
+    for (std::size_t i = 0; i < d; ++i) {
+      double c = 0.0;
+      for (std::size_t a = 0; a < npe; ++a)
+        c += model.mesh.coordinates[static_cast<std::size_t>(model.mesh.connectivity[e * npe + a]) * d + i] /
+             static_cast<double>(npe);
+      miss = std::max(miss, std::abs(c - centre[i]));
+    }
+    if (miss < 1e-6) found = e;
+  }
+  if (found == model.mesh.element_count()) return found;
+  model.materials.push_back(model.materials.front());
+  model.materials.back().name = "eroding " + model.materials.front().name;
+  model.erosion.resize(model.materials.size());
+  model.erosion.back().geometric_strain = geometric_strain;
+  Part part = model.parts[static_cast<std::size_t>(model.mesh.element_part[found])];
+  part.name = "eroding";
+  part.material = static_cast<int>(model.materials.size()) - 1;
+  model.parts.push_back(part);
+  model.mesh.element_part[found] = static_cast<int>(model.parts.size()) - 1;
+  for (Join& join : model.joins) join.fem_parts.push_back(model.mesh.element_part[found]);
+  return found;
 }
 
 // Lateral extent of the column: `cells` elements wide, starting at `inner` (m) from the axis or

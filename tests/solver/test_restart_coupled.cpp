@@ -113,6 +113,15 @@ Model join_model(std::int64_t max_cycles) {
   return model;
 }
 
+// The joined column with the FEM element just before the first join (beside the axis of symmetry
+// y = 0) eroding as the pulse arrives, before the half-way restart: the restored run must rebuild the
+// interface the erosion left (coupling/join_erosion.cpp).
+Model join_erosion_model(std::int64_t max_cycles) {
+  Model model = join_model(max_cycles);
+  test::make_element_erode(model, {0.195, 0.005, 0.0}, 1e-4);
+  return model;
+}
+
 // The sliding-contact test's disc (tests/coupling/test_sliding_contact.cpp):
 // SPH particles striking a FEM plate at 50 m/s, obliquely, with friction;
 // the contact is active across the restart.
@@ -169,6 +178,15 @@ TEST(RestartCoupled, ErosionAfterTheRestartBitIdentical) {
 TEST(RestartCoupled, JoinedSphZoneBitIdentical) {
   const auto cycles = test::expect_split_run_bit_identical(scratch("join"), join_model, "column.csv");
   EXPECT_GT(cycles, 40);
+}
+
+TEST(RestartCoupled, JoinElementErodedBeforeTheRestartBitIdentical) {
+  const fs::path root = scratch("join-erosion");
+  const auto cycles = test::expect_split_run_bit_identical(root, join_erosion_model, "column.csv");
+  EXPECT_GT(cycles, 40);
+  const auto list = list_checkpoints(root / "split" / "checkpoints");
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(eroded_count(list[1]), 1u) << "the element must erode before the restart";
 }
 
 TEST(RestartCoupled, SlidingContactBitIdentical) {

@@ -86,7 +86,6 @@ class SphFemJoin {
   // leaves it (join_erosion.cpp). A pure function of the eroded flags and the set-up geometry, so a
   // restarted run rebuilds the same interface.
   void follow_erosion();
-  std::size_t face_count() const { return faces_.size(); }
 
  private:
   struct Point {

@@ -60,6 +60,31 @@ inline ParticleFillSpec zone_box(Model& model, double spacing, std::array<double
   return fill;
 }
 
+// The r-z column beside the axis (test_join_axis.cpp, test_join_erosion.cpp): `columns` cells of
+// 5 mm (axis at r = 0, roller at r = columns cells), 1.2 m long, the SPH zone [0.4, 0.8] m joined,
+// a sin^2 velocity pulse of 1 m/s over 0.1 m / c_p driven along z into the bottom (or down from the
+// top) and absorbed by a transmitting boundary at the other end.
+inline Model axis_column(int columns, const ElasticConstants& c, bool from_top = false) {
+  const double cell = 5e-3, length = 1.2, width = columns * cell;
+  BlockSpec block{"bar", 0, {0, 0, 0}, {width, length, 0}, {columns, static_cast<int>(length / cell), 1}};
+  Model model = block_model(GeometryMode::axisymmetric, {block}, c);
+  make_joined_zone(model, zone_box(model, cell, {0.0, 0.4, 0.0}, {width, 0.8, 0.0}));
+  model.sph.set_bool("viscosity_switch", true);  // as the plane-pulse tests of test_join.cpp
+  BoundaryCondition drive = velocity(from_top ? "bar.ymax" : "bar.ymin", 1, from_top ? -1.0 : 1.0);
+  drive.history = sin2_pulse(0.1 / c.p_wave_speed());
+  model.boundaries.push_back(drive);
+  BoundaryCondition far;
+  far.kind = BoundaryKind::transmitting;
+  far.set = from_top ? "bar.ymin" : "bar.ymax";
+  model.boundaries.push_back(far);
+  BoundaryCondition axis;
+  axis.kind = BoundaryKind::axis;
+  axis.set = "bar.xmin";
+  model.boundaries.push_back(axis);
+  model.boundaries.push_back(symmetry("bar.xmax", {1, 0, 0}));
+  return model;
+}
+
 // Gives the element of `model` whose centre is `centre` (m) a part and material of its own: a copy of
 // material 0 that erodes past `geometric_strain`, its part joined as the FEM parts around the zone are.
 // Returns the element's index (model.mesh.element_count() when no centre matches within 1e-6 m).

@@ -41,25 +41,9 @@ AxisCrossing axis_crossing(int columns, double shear_modulus) {
   test::use_threads(1);
   test::ElasticConstants c;
   c.shear_modulus = shear_modulus;
-  const double cell = 5e-3, length = 1.2, width = columns * cell;
-  BlockSpec block{"bar", 0, {0, 0, 0}, {width, length, 0}, {columns, static_cast<int>(length / cell), 1}};
-  Model model = test::block_model(GeometryMode::axisymmetric, {block}, c);
-  make_joined_zone(model, test::zone_box(model, cell, {0.0, 0.4, 0.0}, {width, 0.8, 0.0}));
-  model.sph.set_bool("viscosity_switch", true);  // as the plane-pulse tests of test_join.cpp
-
-  const double c_p = c.p_wave_speed(), duration = 0.1 / c_p;
-  BoundaryCondition drive = test::velocity("bar.ymin", 1, 1.0);
-  drive.history = test::sin2_pulse(duration);
-  model.boundaries.push_back(drive);
-  BoundaryCondition far;
-  far.kind = BoundaryKind::transmitting;
-  far.set = "bar.ymax";
-  model.boundaries.push_back(far);
-  BoundaryCondition axis;
-  axis.kind = BoundaryKind::axis;
-  axis.set = "bar.xmin";
-  model.boundaries.push_back(axis);
-  model.boundaries.push_back(test::symmetry("bar.xmax", {1, 0, 0}));
+  const double cell = 5e-3, width = columns * cell;
+  Model model = test::axis_column(columns, c);
+  const double c_p = c.p_wave_speed();
   // The pulse's tail leaves the second join at (0.8 + 0.1) / c_p; a little more for the ringing.
   model.run.end_time = 1.0 / c_p;
 

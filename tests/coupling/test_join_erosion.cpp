@@ -26,29 +26,13 @@ using namespace camouflet;
 TEST(SphFemJoin, AnErodedInterfaceElementLeavesTheJoin) {
   test::use_threads(1);
   const test::ElasticConstants c;
-  const double cell = 5e-3, length = 1.2, width = 12 * cell;
-  BlockSpec block{"bar", 0, {0, 0, 0}, {width, length, 0}, {12, static_cast<int>(length / cell), 1}};
-  Model model = test::block_model(GeometryMode::axisymmetric, {block}, c);
-  make_joined_zone(model, test::zone_box(model, cell, {0.0, 0.4, 0.0}, {width, 0.8, 0.0}));
-  model.sph.set_bool("viscosity_switch", true);  // as the plane-pulse tests of test_join.cpp
-
+  const double cell = 5e-3;
+  Model model = test::axis_column(12, c, true);
   // The axis element under the zone erodes as the pulse arrives.
   const std::size_t needle = test::make_element_erode(model, {0.5 * cell, 0.4 - 0.5 * cell, 0.0}, 1e-4);
   ASSERT_LT(needle, model.mesh.element_count());
 
   const double c_p = c.p_wave_speed(), duration = 0.1 / c_p;
-  BoundaryCondition drive = test::velocity("bar.ymax", 1, -1.0);
-  drive.history = test::sin2_pulse(duration);
-  model.boundaries.push_back(drive);
-  BoundaryCondition far;
-  far.kind = BoundaryKind::transmitting;
-  far.set = "bar.ymin";
-  model.boundaries.push_back(far);
-  BoundaryCondition axis;
-  axis.kind = BoundaryKind::axis;
-  axis.set = "bar.xmin";
-  model.boundaries.push_back(axis);
-  model.boundaries.push_back(test::symmetry("bar.xmax", {1, 0, 0}));
   // The pulse's tail passes z = 0.4 - cell at (0.8 + cell + 0.1) / c_p.
   model.run.end_time = 1.05 / c_p;
 

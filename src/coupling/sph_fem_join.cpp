@@ -346,7 +346,7 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
       continue;
     }
     Vec<D> c = interpolate(x_, pt), vel = interpolate(v_, pt);
-    // The stress the element's own nodal forces use: sigma - q I (fem_elements.cpp). Without q
+    // The stress the element's own nodal forces use: sigma - q I (fem_forces.cpp). Without q
     // the particles would see a different traction than the FEM transmits.
     SymTensor sigma = el.stress[e];
     sigma.xx -= el.viscosity[e];
@@ -408,7 +408,7 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
 
 template <int D>
 void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f) {
-  // The pair force of sph_sums.cpp (compute_accelerations), term by term.
+  // The pair force of sph_forces.cpp (force_pass), term by term.
   const auto& p = particles.particles();
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
@@ -519,7 +519,7 @@ double SphFemJoin<D>::settle(const sph::SphSystem<D>& particles, double dt,
                              std::vector<MaterialPoints>& batches) {
   // After the kick: the pair velocities v(n+1/2) are known, so the work of the pair forces of
   // t_n is taken with the mean (v(n-1/2) + v(n+1/2)) / 2 of each pair's relative velocity, the
-  // centring of the kinetic energy and of the particles' own viscous heating (sph_sums.cpp, kick).
+  // centring of the kinetic energy and of the particles' own viscous heating (sph_motion.cpp, kick).
   const auto& p = particles.particles();
   const std::size_t begin = particles.external_begin();
   double join_work = 0.0;

@@ -12,7 +12,7 @@
 //
 // Lists are full (both i->j and j->i) and sorted by j. The pair sums of
 // SphSystem run over a thin-skin sub-list of them, each particle pair once
-// (the j > i part), scattering into per-thread sums (sph_sums.cpp). Only the
+// (the j > i part), scattering into per-thread sums (sph_forces.cpp). Only the
 // first n_owned points get lists; points after them (ghosts) are candidates only.
 #include <cstdint>
 #include <span>

@@ -1,7 +1,7 @@
 // Rows of the pair-symmetric SPH loops on SIMD lanes (pair_lanes.hpp): the
 // momentum row of force_pass() and the kinematics row of update_state(),
-// without the kernel correction (sph_sums.cpp keeps the scalar loops for it).
-// The equations and the pair-once bookkeeping are those of sph_sums.cpp; each
+// without the kernel correction (sph_forces.cpp and sph_kinematics.cpp keep the scalar loops for it).
+// The equations and the pair-once bookkeeping are those of those scalar loops; each
 // lane repeats the scalar operations in order, so that only the order of the
 // additions into a particle's sums differs from the scalar loops.
 #include "sph/pair_lanes.hpp"

@@ -1,5 +1,5 @@
 // Set-up, bookkeeping and reporting of the SPH package; the particle sums are
-// in sph_sums.cpp.
+// in sph_forces.cpp, sph_motion.cpp and sph_kinematics.cpp.
 #include "sph/sph_system.hpp"
 
 #include <fmt/format.h>

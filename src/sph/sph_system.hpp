@@ -247,7 +247,7 @@ class SphSystem {
   // Per material: the first material with the same EOS type; the artificial
   // conductivity only joins particles of one family (SphOptions::conductivity).
   std::vector<int> eos_family_;
-  void conduct_heat(double dt);  // the conductivity's share of kick() (sph_sums.cpp)
+  void conduct_heat(double dt);  // the conductivity's share of kick() (sph_motion.cpp)
   // Copies in id order for fill_snapshot() once the memory order differs.
   struct IdOrderCopy {
     std::vector<Vec<D>> position, displacement, velocity, acceleration;

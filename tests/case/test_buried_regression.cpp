@@ -111,7 +111,7 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
   // soil_release_modulus): the step is shorter wherever compacted soil may release, the values
   // move only by that. t2 6.77311 -> 7.01636 m/s (+3.6 %), t9 +1.9 %, A1 +1.8 %, the others < 1 %.
   // Updated 2 Dec 2026: the SPH kinematic sums weigh each neighbour by its mid-step planar density
-  // (sph_sums.cpp, update_state), which removes a first-order lag of the p dV work behind the forces'
+  // (sph_kinematics.cpp, update_state), which removes a first-order lag of the p dV work behind the forces'
   // work: the energy balance closes to 0.11 %, was 1.0 %. B2 3.49774e7 -> 3.20568e7 Pa (-8.3 %),
   // A1 2.97262e8 -> 3.23224e8 Pa (+8.7 %: the products keep less spurious energy but expand on the
   // right p dV), rebar 4.45075e-3 -> 4.23915e-3 (-4.8 %); t9, t2 and B1 moved less than 1.5 %.
@@ -188,7 +188,7 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   // 3.47361e8 Pa (+7.5 %), rebar 4.23915e-3 -> 4.53936e-3 (+7.1 %), t9 8.44543e7 -> 8.75975e7 Pa
   // (+3.7 %); B1 and t2 moved less than 0.5 %. The energy balance closes to 0.16 % (0.11 %).
   // Updated 2 Dec 2026: the SPH kinematic sums weigh each neighbour by its mid-step planar density
-  // (sph_sums.cpp, update_state), which removes a first-order lag of the p dV work behind the forces'
+  // (sph_kinematics.cpp, update_state), which removes a first-order lag of the p dV work behind the forces'
   // work: the energy balance closes to 0.11 %, was 1.0 %. B2 3.49774e7 -> 3.20568e7 Pa (-8.3 %),
   // A1 2.97262e8 -> 3.23224e8 Pa (+8.7 %: the products keep less spurious energy but expand on the
   // right p dV), rebar 4.45075e-3 -> 4.23915e-3 (-4.8 %); t9, t2 and B1 moved less than 1.5 %.

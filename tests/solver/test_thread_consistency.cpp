@@ -9,7 +9,7 @@
 //   (measured 0). The check stays within 1e-12 relative to the history's peak,
 //   which the per-thread buffer assembly (ForceAssembly::buffers: the same
 //   element forces in another grouping) also meets.
-// * SPH: the pair sums are pair-symmetric (each pair once, sph_sums.cpp):
+// * SPH: the pair sums are pair-symmetric (each pair once, sph_forces.cpp):
 //   each thread scatters into its own copy of the particle sums, added in
 //   thread order (sph/thread_sums.hpp), so, like the FEM, a fixed thread count
 //   is bit-identical (checked exactly) and 1 vs 2 threads equal to round-off

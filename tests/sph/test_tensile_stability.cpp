@@ -7,7 +7,7 @@
 // period: kinetic energy back to < 0.15 E0); with the
 // artificial stress (Gray, Monaghan & Swift 2001) the lattice keeps its
 // spacing, the vibration survives several periods and kinetic + internal
-// energy (the artificial stress's work booked, sph_sums.cpp) is conserved.
+// energy (the artificial stress's work booked, sph_motion.cpp) is conserved.
 //
 // Measured: the smallest pair distance over the run (clumping), the largest
 // kinetic energy in the last period relative to the initial (the mode kept),

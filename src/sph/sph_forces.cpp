@@ -1,0 +1,330 @@
+// The particle forces of one cycle (equations in sph_system.hpp): the pair
+// sums of the momentum and energy equations, the active-pair lists and row
+// blocks they run over, and the per-particle factors they read.
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/sym_tensor_vec.hpp"
+#include "sph/artificial_stress.hpp"
+#include "sph/sph_system.hpp"
+
+namespace camouflet::sph {
+
+template <int D>
+void SphSystem<D>::compute_accelerations() {
+  // Re-sort by cell every sort_interval list rebuilds: here, at the start of
+  // the force stage, no other stage holds per-particle arrays of its own.
+  if (options_.sort_interval > 0 && search_.builds() - builds_at_sort_ >= options_.sort_interval)
+    sort_by_cell();
+  const std::size_t n = p_.real;
+  if (options_.artificial_stress && D == 3) {
+    // In blocks, so that the eigen-solves run on SIMD lanes (artificial_stress_lanes.cpp).
+    constexpr std::size_t block = 256;
+#pragma omp parallel for schedule(dynamic, 4)  // eigen-solves vary in cost: balance them
+    for (std::size_t b = 0; b < n; b += block) {
+      const std::size_t count = std::min(block, n - b);
+      double scale[block];
+      for (std::size_t k = 0; k < count; ++k) {
+        const double eta = p_.planar_density[b + k];
+        scale[k] = geometric_weight(p_.position[b + k]) / (eta * eta);
+      }
+      artificial_stress_3d({p_.stress.data() + b, count}, {scale, count}, options_.artificial_stress_epsilon,
+                           {p_.tensile_term.data() + b, count});
+    }
+  } else if (options_.artificial_stress) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double eta = p_.planar_density[i];
+      p_.tensile_term[i] = artificial_stress<D>(p_.stress[i], options_.artificial_stress_epsilon,
+                                                geometric_weight(p_.position[i]) / (eta * eta));
+    }
+  }
+  prepare_neighbours();
+  if (options_.kernel_correction && !correction_current_) compute_correction();
+  force_pass(true);
+}
+
+template <int D>
+void SphSystem<D>::size_point_factors() {
+  const std::size_t total = p_.position.size();
+  sum_density_.resize(total);
+  inverse_density_.resize(total);
+  point_volume_.resize(total);
+  has_tensile_.resize(total);
+  // The SIMD pair loops (no kernel correction) read the packed records, filled in the same pass.
+  if (!options_.kernel_correction) pair_points_.resize(total);
+}
+
+template <int D>
+void SphSystem<D>::fill_point_factors() {
+  const std::size_t total = p_.position.size();
+  const bool tensile = options_.artificial_stress;
+  const bool pack = !options_.kernel_correction;
+  using P = PairPoint<D>;
+#pragma omp for schedule(static)
+  for (std::size_t k = 0; k < total; ++k) {
+    const double eta_q = quadrature_density(k);
+    sum_density_[k] = eta_q;
+    inverse_density_[k] = 1.0 / eta_q;
+    point_volume_[k] = p_.mass[k] / eta_q;
+    const SymTensor& r = p_.tensile_term[k];
+    has_tensile_[k] =
+        tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
+    if (!pack) continue;
+    double* f = pair_points_[k].f;
+    for (int a = 0; a < D; ++a) {
+      f[P::x + a] = p_.position[k][a];
+      f[P::v + a] = p_.velocity[k][a];
+    }
+    f[P::h] = p_.smoothing_length[k];
+    f[P::m] = p_.mass[k];
+    const SymTensor& s = p_.stress_term[k];
+    const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
+    for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
+    f[P::eta] = eta_q;  // eta_q: the pair weights (quadrature_density)
+    f[P::c] = p_.wave_speed[k];
+  }
+}
+
+template <int D>
+void SphSystem<D>::refresh_active_pairs() {
+  const std::size_t n = p_.real, total = p_.position.size();
+  const auto& x = p_.position;
+  const auto& h = p_.smoothing_length;
+  if (active_builds_ == search_.builds() && active_x_.size() == total) {
+    // Same criterion as NeighbourSearch::needs_rebuild, against the extraction.
+    double d2_max = 0.0, dh_max = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : d2_max, dh_max)
+    for (std::size_t k = 0; k < total; ++k) {
+      const Vec<D> d = x[k] - active_x_[k];
+      d2_max = std::max(d2_max, dot(d, d));
+      dh_max = std::max(dh_max, h[k] - active_h_[k]);
+    }
+    if (2.0 * std::sqrt(d2_max) + support_factor * dh_max <= active_margin_) return;
+  }
+  active_builds_ = search_.builds();
+  ++active_extractions_;
+  active_x_.assign(x.begin(), x.end());
+  active_h_.assign(h.begin(), h.end());
+  active_offset_.assign(n + 1, 0);
+  // The cell lists hold every pair within 2 h_ij + (their skin - the part of it used):
+  // the thin skin can be no wider than that.
+  const double skin = std::max(0.0, std::min(active_skin_, search_.skin() - search_.skin_used(x, h)));
+  active_margin_ = skin;
+  auto inside = [&](std::size_t i, std::uint32_t j) {
+    const Vec<D> dx = x[i] - x[j];
+    const double reach = support_factor * pair_smoothing_length(h[i], h[j]) + skin;
+    return dot(dx, dx) < reach * reach;
+  };
+  // One pass over the cell lists: each block of particles collects its entries
+  // in a buffer of its own, then the buffers are copied into place.
+  constexpr std::size_t block = 256;
+  const std::size_t n_blocks = (n + block - 1) / block;
+  std::vector<std::vector<std::uint32_t>> found(n_blocks);
+#pragma omp parallel for schedule(dynamic, 4)
+  for (std::size_t b = 0; b < n_blocks; ++b) {
+    std::vector<std::uint32_t>& buffer = found[b];
+    const std::size_t end = std::min(n, (b + 1) * block);
+    std::size_t candidates = 0;
+    for (std::size_t i = b * block; i < end; ++i) candidates += search_.neighbours(i).size();
+    buffer.reserve(candidates);
+    for (std::size_t i = b * block; i < end; ++i) {
+      const std::size_t start = buffer.size();
+      for (const std::uint32_t j : search_.neighbours(i))
+        if (inside(i, j)) buffer.push_back(j);
+      active_offset_[i + 1] = buffer.size() - start;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) active_offset_[i + 1] += active_offset_[i];
+  active_.resize(active_offset_[n]);
+  active_upper_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < n_blocks; ++b) {
+    std::copy(found[b].begin(), found[b].end(),
+              active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[b * block]));
+    const std::size_t end = std::min(n, (b + 1) * block);
+    for (std::size_t i = b * block; i < end; ++i) {
+      const auto first = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i]);
+      const auto last = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i + 1]);
+      active_upper_[i] = static_cast<std::size_t>(
+          std::upper_bound(first, last, static_cast<std::uint32_t>(i)) - active_.begin());
+    }
+  }
+  upper_index_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    upper_index_[i + 1] = upper_index_[i] + (active_offset_[i + 1] - active_upper_[i]);
+}
+
+namespace {
+// Row blocks per thread of the pair-once loops: more balance the load, but each block's window
+// reaches ~2 h of rows past its end, zeroed and added up once more (docs/performance.md).
+constexpr int blocks_per_thread = 4;
+}  // namespace
+
+template <int D>
+void SphSystem<D>::prepare_row_blocks() {
+  // Blocks of about equal cost (the j > i entries plus a per-row share for the row's own work: its
+  // packed record, the finishing of its sums), several per thread, handed out dynamically: a thread
+  // that falls behind (a busy core, a costlier part of the body) is relieved by the others, and
+  // the sums do not depend on which thread runs a block. One thread: one block, the serial loop.
+  const int threads = std::max(1, omp_get_max_threads());
+  const std::size_t blocks = threads == 1 ? 1 : static_cast<std::size_t>(blocks_per_thread * threads);
+  if (row_blocks_extraction_ == active_extractions_ &&
+      row_blocks_.count() == std::min(blocks, std::max<std::size_t>(p_.real, 1)))
+    return;
+  const std::size_t n = p_.real;
+  constexpr std::size_t row_cost = 4;  // pair entries
+  // One past the largest particle among row i's j > i entries (ghosts and coupling points, j >= n,
+  // sort after the particles in the list and have no sums).
+  auto reach = [&](std::size_t i) {
+    const auto list = active_upper_neighbours(i);
+    std::size_t e = list.size();
+    while (e > 0 && list[e - 1] >= n) --e;
+    return e > 0 ? std::max<std::size_t>(i + 1, list[e - 1] + 1) : i + 1;
+  };
+  row_blocks_.build(blocks, n, upper_index_.data(), row_cost, reach);
+  row_blocks_extraction_ = active_extractions_;
+}
+
+template <int D>
+void SphSystem<D>::force_pass(bool write_rates) {
+  // The momentum sum of sph_system.hpp, pair-symmetric: each pair of
+  // particles is evaluated once (j > i) and gives m_j F_ij to i and -m_i F_ij
+  // to j, with the pair force per unit mass product
+  //   F_ij = (S_i / eta_j + S_j / eta_i) . grad W - d_ij     (volume form)
+  //   F_ij = (S_i / eta_i + S_j / eta_j) . grad W - d_ij     (density form)
+  //   d_ij = Pi_ij grad W - f^n (R_i + R_j) . grad W,
+  // antisymmetric in (i, j) because grad_j W_ji = -grad_i W_ij. Pairs with
+  // ghosts and coupling points count for i only. d_ij is stored per pair for
+  // the viscous and artificial-stress heating of kick().
+  const std::size_t n = p_.real;
+  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
+  refresh_active_pairs();
+  size_point_factors();
+  pair_dissipation_.resize(upper_index_[n]);
+  prepare_row_blocks();
+  const RowBlocks& blocks = row_blocks_;
+  const std::size_t n_blocks = blocks.count();
+  force_sums_.prepare(blocks, n);
+  const bool tensile = options_.artificial_stress;
+  const bool volume_form = options_.volume_form;
+  const bool switched = options_.viscosity_switch;
+  const double power = options_.artificial_stress_power;
+  const auto& x = p_.position;
+  const auto& v = p_.velocity;
+  const auto& m = p_.mass;
+  const auto& eta = sum_density_;  // eta_q: the pair weights (quadrature_density)
+  const auto& h = p_.smoothing_length;
+  const auto& inv_eta = inverse_density_;
+  const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
+  // One parallel region: the point factors (barrier), the rows, their sums (docs/performance.md,
+  // "Fewer parallel regions").
+#pragma omp parallel
+  {
+    fill_point_factors();
+    // Blocks handed out one at a time (prepare_row_blocks()); rows are added up after the barrier.
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < n_blocks; ++k) {
+      ForceSum* const own = force_sums_.zeroed(blocks, k);
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+        if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
+          force_row_lanes(i, own);
+          continue;
+        }
+        Vec<D> acc{};
+        double mu_max = 0.0;
+        int count = 0;
+        const std::size_t base = upper_index_[i];
+        const auto list = active_upper_neighbours(i);
+        for (std::size_t e = 0; e < list.size(); ++e) {
+          const std::uint32_t j = list[e];
+          const Vec<D> dx = x[i] - x[j];
+          const double r2 = dot(dx, dx);
+          const double hij = pair_smoothing_length(h[i], h[j]);
+          if (r2 >= support_factor * support_factor * hij * hij) {
+            pair_dissipation_[base + e] = Vec<D>{};
+            continue;
+          }
+          const double inv_h = 1.0 / hij;
+          const double r = std::sqrt(r2);
+          const auto w = kernel_.pair_terms(r, inv_h);
+          const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
+          const Vec<D> dv = v[i] - v[j];
+          const double vr = dot(dv, dx);
+          Vec<D> dissipation{};
+          double mu = 0.0;
+          if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
+            mu = hij * vr / (r2 + 0.01 * hij * hij);
+            const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+            const PairViscosity q =
+                switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
+            const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+            mu_max = std::max(mu_max, -mu);
+            dissipation = grad * pi_ij;
+          }
+          if (tensile && (has_tensile_[i] | has_tensile_[j])) {
+            const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
+            dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
+          }
+          pair_dissipation_[base + e] = dissipation;
+          // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j /
+          // eta_j).
+          const SymTensor pair = volume_form
+                                     ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
+                                     : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
+          const Vec<D> force = apply<D>(pair, grad) - dissipation;
+          acc += force * m[j];
+          ++count;
+          if (j < n) {
+            ForceSum& other = own[j];
+            other.acceleration -= force * m[i];
+            other.compression_rate = std::max(other.compression_rate, -mu);
+            ++other.count;
+          }
+        }
+        ForceSum& mine = own[i];
+        mine.acceleration += acc;
+        mine.compression_rate = std::max(mine.compression_rate, mu_max);
+        mine.count += count;
+      }
+    }
+    if (write_rates) {
+      auto add = [](ForceSum& total, const ForceSum& part) {
+        total.acceleration += part.acceleration;
+        total.compression_rate = std::max(total.compression_rate, part.compression_rate);
+        total.count += part.count;
+      };
+#pragma omp for schedule(dynamic, 1)
+      for (std::size_t k = 0; k < n_blocks; ++k) {
+        for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
+          ForceSum total = force_sums_.total(blocks, k, i, add);
+          if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
+            total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
+          p_.acceleration[i] = total.acceleration;
+          p_.compression_rate[i] = total.compression_rate;
+          p_.neighbour_count[i] = total.count;
+        }
+      }
+    }
+  }
+  pair_dissipation_current_ = true;
+  pair_dissipation_extraction_ = active_extractions_;
+}
+
+// The class itself is instantiated in sph_system.cpp; these are its members defined here.
+template void SphSystem<2>::refresh_active_pairs();
+template void SphSystem<3>::refresh_active_pairs();
+template void SphSystem<2>::prepare_row_blocks();
+template void SphSystem<3>::prepare_row_blocks();
+template void SphSystem<2>::force_pass(bool);
+template void SphSystem<3>::force_pass(bool);
+template void SphSystem<2>::size_point_factors();
+template void SphSystem<3>::size_point_factors();
+template void SphSystem<2>::fill_point_factors();
+template void SphSystem<3>::fill_point_factors();
+template void SphSystem<2>::compute_accelerations();
+template void SphSystem<3>::compute_accelerations();
+
+}  // namespace camouflet::sph

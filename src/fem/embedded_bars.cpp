@@ -181,7 +181,7 @@ void EmbeddedBars<D>::add_forces(const double* x, double* f) const {
     const double volume = segment_mass_[s] / pts.density[p];    // current volume, m^3
     if (set.hoop) {
       // Virtual power of the hoop stress against v_r / r at the segment centre
-      // (the axisymmetric element's hoop term, eq. of fem_elements.cpp).
+      // (the axisymmetric element's hoop term, eq. of fem_forces.cpp).
       const double r_bar = 0.5 * (xi[0] + xj[0]);
       fi[0] = fj[0] = -0.5 * sigma * volume / r_bar;
     } else {

@@ -1,0 +1,235 @@
+// The kinematics of the FEM elements at mid-step (fem_elements.hpp): volume,
+// density, strain rate and spin, artificial viscosity and the step limit,
+// element packs on SIMD lanes, with the tangled-element check.
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "core/error.hpp"
+#include "fem/element_gather.hpp"
+#include "fem/fem_elements.hpp"
+#include "fem/parallel.hpp"
+
+namespace camouflet {
+
+namespace {
+
+// Number of negative corner Jacobians of a quad (2-D; nodes counter-clockwise): at corner a,
+// (x_(a+1) - x_a) x (x_(a-1) - x_a). All four are positive for a convex quad, one is negative
+// for a concave one, two or more once its edges cross or it is inverted. 0 in 3-D (not checked).
+template <int D, typename Nodes>
+int corner_jacobians_negative(const Nodes& x, int lane = -1) {
+  int negative = 0;
+  if constexpr (D == 2) {
+    const auto at = [&](int i, int a) -> double {
+      if constexpr (std::is_same_v<Nodes, PackedNodes<D>>)
+        return x[i][a][lane];
+      else
+        return x[i][a];
+    };
+    for (int a = 0; a < 4; ++a) {
+      const int next = (a + 1) % 4, prev = (a + 3) % 4;
+      const double j = (at(0, next) - at(0, a)) * (at(1, prev) - at(1, a)) -
+                       (at(1, next) - at(1, a)) * (at(0, prev) - at(0, a));
+      if (j < 0.0) ++negative;
+    }
+  }
+  return negative;
+}
+
+}  // namespace
+
+template <int D>
+KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, const double* v_previous, double dt,
+                                            const ViscosityControl& visc,
+                                            std::vector<MaterialPoints>& batches) {
+  constexpr int N = nodes;
+  constexpr int W = pack_width;
+  const bool axi = axisymmetric_;
+  const std::size_t ne = size();
+  const std::int64_t packs = static_cast<std::int64_t>((ne + W - 1) / W);
+  std::int64_t bad = std::numeric_limits<std::int64_t>::max();
+  std::int64_t tangled = std::numeric_limits<std::int64_t>::max();
+  double viscous_work = 0.0;
+#pragma omp parallel for schedule(static) reduction(min : bad, tangled) reduction(+ : viscous_work) if (static_cast<std::int64_t>(ne) > parallel_threshold)
+  for (std::int64_t k = 0; k < packs; ++k) {
+    const std::size_t e0 = static_cast<std::size_t>(k) * W;
+    const int count = static_cast<int>(std::min<std::size_t>(W, ne - e0));
+    bool any = false;
+    for (int l = 0; l < count; ++l) any = any || !eroded[e0 + static_cast<std::size_t>(l)];
+    if (!any) continue;
+    PackedNodes<D> xe, ve, ae, xh, b;
+    gather_packs<D, 3>({x, v, v_previous}, connectivity.data(), ConsecutiveLanes{e0, count}, {&xe, &ve, &ae});
+    Pack speed2{};
+    for (int a = 0; a < N; ++a) {
+      Pack s2{};
+      for (int i = 0; i < D; ++i) {
+        xh[i][a] = xe[i][a] - 0.5 * dt * ve[i][a];
+        s2 += ve[i][a] * ve[i][a];
+      }
+      speed2 = max_of(speed2, s2);
+    }
+
+    // Velocity gradient L_ij = sum_a v_ia b_ja on the mid-step geometry (FB 1981, eq. 14).
+    Shape<D>::gradients(xh, b);
+    Pack L[3][3] = {};
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) {
+        Pack t{};
+        for (int a = 0; a < N; ++a) t += ve[i][a] * b[j][a];
+        L[i][j] = t;
+      }
+    if constexpr (D == 2) {
+      if (axi) {
+        // Hoop strain rate v_r / r at the element centre.
+        Pack vr{}, r{};
+        for (int a = 0; a < N; ++a) {
+          vr += ve[0][a];
+          r += xh[0][a];
+        }
+        L[2][2] = vr / r;
+      }
+    }
+
+    // New volume and density at t_{n+1}.
+    const Pack measure = Shape<D>::measure(xe);
+    Pack r_bar{};
+    const Pack w = ring_weight_pack<D>(axi, xe, r_bar);
+    const Pack vol = measure * w;
+    const Pack le = Shape<D>::length(xe, measure);
+
+    // Strain rate, spin, density and q of the whole pack, lane-parallel (the
+    // same operations per lane as the scalar forms they replace, so the same
+    // roundings); lanes whose volume is bad are computed but never written.
+    const Pack d_xy = 0.5 * (L[0][1] + L[1][0]), d_yz = 0.5 * (L[1][2] + L[2][1]),
+               d_zx = 0.5 * (L[2][0] + L[0][2]);
+    const Pack w_xy = 0.5 * (L[0][1] - L[1][0]), w_yz = 0.5 * (L[1][2] - L[2][1]),
+               w_zx = 0.5 * (L[2][0] - L[0][2]);
+    const Pack rho = load_pack(mass.data(), e0, count) / vol;
+    // Artificial bulk viscosity, compression only (von Neumann-Richtmyer
+    // quadratic + Landshoff linear): q = rho l (C_q^2 l |d| + C_l c) |d| with
+    // d the strain rate along the element's acceleration a (Wilkins 1980,
+    // J. Comput. Phys. 36, 281): d = a.L.a / |a|^2, with a the nodes' mean
+    // velocity change over the step (constraints included: a driven boundary
+    // orients q from its first step); 0 where no node has changed velocity
+    // (the first step from an initial velocity jump takes no q). A shock
+    // decelerates the material along its normal, so d is the compression
+    // across it; a smooth convergent flow (a cylinder or sphere of gas
+    // coasting inwards) compresses across the flow, not along a, and takes
+    // no q, where tr D would heat it (docs/theory-fem.md, "Artificial
+    // viscosity"). The in-plane part only in r-z: a has no hoop component.
+    Pack div{};
+    if (visc.along_acceleration) {
+      Pack abar[D] = {}, a2{};
+      for (int i = 0; i < D; ++i) {
+        for (int n = 0; n < N; ++n) abar[i] += ve[i][n] - ae[i][n];
+        a2 += abar[i] * abar[i];
+      }
+      Pack ala{};
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) ala += abar[i] * L[i][j] * abar[j];
+      for (int l = 0; l < W; ++l) div[l] = a2[l] > 0.0 ? ala[l] / a2[l] : 0.0;
+    } else {
+      div = L[0][0] + L[1][1] + L[2][2];
+    }
+    const Pack q_all = rho * le *
+                       (visc.quadratic * visc.quadratic * le * -div +
+                        visc.linear * load_pack(wave_speed.data(), e0, count)) *
+                       -div;
+    const Pack q = div < 0.0 ? q_all : Pack{};
+    // The force at t_n carried the previous q, the force at t_(n+1) carries
+    // this one; each acts over half of this step's volume change, so the
+    // energy equation is charged with their mean (time-centred q dV).
+    const Pack q_mean = 0.5 * (load_pack(viscosity.data(), e0, count) + q);
+    const Pack work = q_mean * (vol - load_pack(volume.data(), e0, count));
+    const Pack speed_pack = sqrt_of(speed2);
+
+    // Every lane present, valid and not eroded (the usual case): the element
+    // arrays are stored as whole packs after the lane loop.
+    bool whole = count == W;
+    for (int l = 0; l < count && whole; ++l)
+      whole = !eroded[e0 + static_cast<std::size_t>(l)] && vol[l] > 0.0 && std::isfinite(vol[l]);
+    int batch_index = -1;
+    double *pts_density = nullptr, *pts_density_previous = nullptr, *pts_viscosity = nullptr,
+           *pts_length = nullptr;
+    SymTensor* pts_strain_rate = nullptr;
+    Spin* pts_spin = nullptr;
+    for (int l = 0; l < count; ++l) {
+      const std::size_t e = e0 + static_cast<std::size_t>(l);
+      if (eroded[e]) continue;
+      const double vol_l = vol[l];
+      if (!(vol_l > 0.0) || !std::isfinite(vol_l)) {
+        bad = std::min(bad, static_cast<std::int64_t>(e));
+        continue;
+      }
+      if constexpr (D == 2) {
+        // The one-point area is the mean of the corner Jacobians: a quad whose edges cross (top
+        // nodes driven past the bottom ones on one side only) keeps a positive area while two
+        // corners have turned inside out, and its forces and density are then meaningless
+        // (such an element in the buried-structure case set the time step for milliseconds unnoticed).
+        if (corner_jacobians_negative<D>(xe, l) >= 2)
+          tangled = std::min(tangled, static_cast<std::int64_t>(e));
+      }
+      viscous_work -= work[l];  // element order, as the scalar sum
+
+      // The material batch of this lane: its arrays looked up only when the
+      // material changes from the previous lane (usually once per pack).
+      const int m = material[e];
+      if (m != batch_index) {
+        batch_index = m;
+        MaterialPoints& pts = batches[static_cast<std::size_t>(m)];
+        pts_density = pts.density.data();
+        pts_density_previous = pts.density_previous.data();
+        pts_strain_rate = pts.strain_rate.data();
+        pts_spin = pts.spin.data();
+        pts_viscosity = pts.artificial_viscosity.data();
+        pts_length = pts.characteristic_length.data();
+      }
+      const std::size_t p = point[e];
+      pts_density_previous[p] = pts_density[p];
+      pts_density[p] = rho[l];
+      pts_strain_rate[p] = SymTensor{L[0][0][l], L[1][1][l], L[2][2][l], d_xy[l], d_yz[l], d_zx[l]};
+      pts_spin[p] = Spin{w_xy[l], w_yz[l], w_zx[l]};
+      pts_viscosity[p] = q_mean[l];
+      pts_length[p] = le[l];
+      if (!whole) {
+        volume[e] = vol_l;
+        density[e] = rho[l];
+        viscosity[e] = q[l];
+        length[e] = le[l];
+        speed[e] = speed_pack[l];
+      }
+    }
+    if (whole) {
+      store_pack(volume.data(), e0, vol);
+      store_pack(density.data(), e0, rho);
+      store_pack(viscosity.data(), e0, q);
+      store_pack(length.data(), e0, le);
+      store_pack(speed.data(), e0, speed_pack);
+    }
+  }
+  KinematicsResult result;
+  result.viscous_work = viscous_work;
+  if (bad != std::numeric_limits<std::int64_t>::max()) {
+    result.bad_element = bad;
+    result.bad_volume = volume_of(x, static_cast<std::size_t>(bad));
+  }
+  if (tangled != std::numeric_limits<std::int64_t>::max()) {
+    result.tangled_element = tangled;
+    NodeValues<D> xe;
+    gather<D>(x, &connectivity[static_cast<std::size_t>(tangled) * nodes], xe);
+    result.tangled_corners = corner_jacobians_negative<D>(xe);
+  }
+  return result;
+}
+
+template KinematicsResult FemElements<2>::kinematics(const double*, const double*, const double*, double,
+                                                     const ViscosityControl&, std::vector<MaterialPoints>&);
+template KinematicsResult FemElements<3>::kinematics(const double*, const double*, const double*, double,
+                                                     const ViscosityControl&, std::vector<MaterialPoints>&);
+
+}  // namespace camouflet

@@ -1,6 +1,7 @@
 #pragma once
 // Shared between the axisymmetric (buried_structure.cpp) and the 3-D
-// (buried_structure_3d.cpp) buried-structure generators; not a public interface.
+// (buried_structure_3d.cpp) buried-structure generators, with the case-file
+// tables both write in buried_case_tables.cpp; not a public interface.
 #include <string>
 #include <vector>
 

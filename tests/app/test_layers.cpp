@@ -2,7 +2,8 @@
 // `#include "<layer>/..."` in src/<folder>/ points to the same layer or one
 // below it, and the layers of one rank (mesh, fem, sph, boundary, output)
 // never include each other in a cycle. A new folder under src/ must be given
-// a rank here and in the docs before it builds green.
+// a rank here and in the docs before it builds green. Beside it the size
+// rule of the same page: no source file in src/ longer than 600 lines.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,10 +59,12 @@ TEST(Layers, EveryIncludePointsToTheSameLayerOrBelow) {
   const auto& rank = layer_rank();
   const std::vector<Include> includes = layer_includes(src);
   ASSERT_GT(includes.size(), 100u) << "no includes found under " << src;
-  for (const auto& entry : fs::directory_iterator(src))
-    if (entry.is_directory())
+  for (const auto& entry : fs::directory_iterator(src)) {
+    if (entry.is_directory()) {
       EXPECT_TRUE(rank.count(entry.path().filename().string()))
           << "src/" << entry.path().filename().string() << " has no rank in the layer order";
+    }
+  }
   for (const Include& i : includes) {
     if (!rank.count(i.from) || !rank.count(i.to)) continue;  // reported above, or a system path
     EXPECT_LE(rank.at(i.to), rank.at(i.from))
@@ -101,6 +104,26 @@ TEST(Layers, PeerLayersDoNotIncludeEachOtherInACycle) {
   for (const auto& [layer, rank] : layer_rank())
     if (state[layer] == 0 && cycle.empty()) visit(visit, layer);
   EXPECT_TRUE(cycle.empty()) << "layers include each other: " << cycle;
+}
+
+TEST(Layers, NoSourceFileLongerThan600Lines) {
+  // One job per file (docs/architecture.md, "Layers"): a file past this has
+  // grown a second job and is split where its parts meet.
+  constexpr int limit = 600;
+  const fs::path src = fs::path(CAMOUFLET_SOURCE_DIR) / "src";
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(src)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".hpp" && ext != ".cpp") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    int lines = 0;
+    for (std::string text; std::getline(in, text);) ++lines;
+    EXPECT_LE(lines, limit) << "src/" << fs::relative(entry.path(), src).generic_string() << " has " << lines
+                            << " lines";
+  }
+  EXPECT_GT(files, 100) << "no sources found under " << src;
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-scripts/setup.sh
+scripts/setup.sh --target camouflet  # the executable only: no tests, no benchmarks
 case_file=${1:-cases/wang2005/coarse.toml}
 out=${2:-results/$(basename "$case_file" .toml)}
 build/camouflet run "$case_file" -o "$out"

@@ -1,10 +1,19 @@
 #!/usr/bin/env bash
 # Installs what Camouflet needs from Debian 12 packages (only those missing),
 # then configures and builds it (Release) in build/. Safe to run repeatedly.
-# Usage: scripts/setup.sh [extra cmake args]
+# Usage: scripts/setup.sh [--target TARGET] [extra cmake args]
+#   --target TARGET  build only TARGET and what it needs (e.g. camouflet, the
+#                    executable: the main job needs no tests or benchmarks)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
+
+target=()
+if [ "${1:-}" = "--target" ]; then
+  [ $# -ge 2 ] || { echo "setup: --target needs a target name" >&2; exit 2; }
+  target=(--target "$2")
+  shift 2
+fi
 
 packages=(g++ cmake ninja-build pkg-config python3 python3-numpy python3-scipy python3-matplotlib
           libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libtomlplusplus-dev libcli11-dev
@@ -22,4 +31,4 @@ fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build build -j "$jobs"
+cmake --build build -j "$jobs" "${target[@]}"

@@ -249,17 +249,36 @@ def _member(r, z, box):
     return "roof" if z > zt - t else "floor"
 
 
-def _reference_snapshot(outdir):
-    """Mesh and particle data of the last snapshot with reference (initial) positions x - u; {} for 3-D."""
+def _reference_snapshot(outdir, gen):
+    """The last snapshot in the crater's (r, z) plane: {part: (x, ref, conn, fields, v_up, ref3, in_box)}
+    and its time. x and ref (initial positions x - u) are (n, 2) arrays of (r, z), ref3 the initial
+    positions in the snapshot's own coordinates; v_up is the upward velocity of each point (zeros
+    without a velocity field). In 3-D (the quarter model about the
+    charge's vertical axis) r = sqrt(x^2 + y^2), so the crater's ring bins gather every azimuth.
+    in_box(centre) says whether an element centre (reference, the snapshot's own coordinates) lies
+    in the box's outline: (r, z) in r-z; x, |y| within the half width and z in 3-D."""
     files, t = last_snapshots(outdir)
+    raw = {part: read_vtu(path) for part, path in files.items()}
+    three_d = bool(gen.get("three_d")) or any(len(p) and np.any(p[:, 2] != 0.0) for p, _, _ in raw.values())
+    box = _box(gen)
+    half_width = 0.5 * gen.get("box_width_m", 0.0)
+    up = 2 if three_d else 1  # the vertical axis: z in 3-D, the second coordinate in r-z
+
+    def in_box(c):
+        if box is None:
+            return False
+        r1, r2, zb, zt, _ = box
+        return r1 < c[0] < r2 and zb < c[up] < zt and (not three_d or abs(c[1]) < half_width)
+
+    def plane(p):
+        return np.column_stack((np.hypot(p[:, 0], p[:, 1]), p[:, 2])) if three_d else p[:, :2]
+
     out = {}
-    for part, path in files.items():
-        pts, conn, f = read_vtu(path)
-        if len(pts) and np.any(pts[:, 2] != 0.0):
-            return {}, t  # a 3-D model: the crater and member definitions here are for r-z (x = r, y = z)
+    for part, (pts, conn, f) in raw.items():
         u = f.get("displacement", np.zeros_like(pts))
-        ref = pts[:, :2] - u[:, :2]
-        out[part] = (pts[:, :2], ref, conn, f)
+        ref3 = pts - u
+        v_up = f["velocity"][:, up] if "velocity" in f else np.zeros(len(pts))
+        out[part] = (plane(pts), plane(ref3), conn, f, v_up, ref3, in_box)
     return out, t
 
 
@@ -351,16 +370,17 @@ def crater(outdir, gen):
     dz / 2 (empty bins skipped, one shallow bin between deep ones tolerated): its outer edge is the
     apparent radius, its largest depression the apparent depth. dz is the spacing of the two top
     layers of points near the axis. No gravity, no fallback: slow material inside the bowl counts as
-    ground."""
+    ground. In 3-D r is the distance from the charge's vertical axis and each bin a ring: its top is
+    the ring's highest ground, so the radius is where the shallowest azimuth leaves the bowl."""
     box = _box(gen)
     d = gen.get("burst_depth_m")
-    snap, _ = _reference_snapshot(outdir)
+    snap, _ = _reference_snapshot(outdir, gen)
     if box is None or d is None or not snap:
         return None
-    r1, r2, zb, zt, _ = box
+    r1 = box[0]
     # The explosive: the material of the element or particle nearest to the charge centre (0, -d) at t = 0.
     candidates = []
-    for part, (x, ref, conn, f) in snap.items():
+    for part, (x, ref, conn, f, _, _, _) in snap.items():
         centres = np.array([ref[c].mean(axis=0) for c in conn]) if part == 0 else ref
         if len(centres):
             k = int(np.argmin(np.hypot(centres[:, 0], centres[:, 1] + d)))
@@ -369,20 +389,19 @@ def crater(outdir, gen):
         return None
     explosive = min(candidates)[1]
     cur, ref0, vz, loose = [], [], [], []
-    for part, (x, ref, conn, f) in snap.items():
+    for part, (x, ref, conn, f, v_up, ref3, in_box) in snap.items():
         mat = f["material"].astype(int)
         if part == 0:
             keep = set()
             for c, m in zip(conn, mat):
-                r, z = ref[c].mean(axis=0)
-                if m != explosive and not (r1 < r < r2 and zb < z < zt):
+                if m != explosive and not in_box(ref3[c].mean(axis=0)):
                     keep.update(int(i) for i in c)
             idx = np.array(sorted(keep), dtype=int)
         else:
             idx = np.nonzero(mat != explosive)[0]
         cur.append(x[idx])
         ref0.append(ref[idx])
-        vz.append(f["velocity"][idx, 1] if "velocity" in f else np.zeros(len(idx)))
+        vz.append(v_up[idx])
         loose.append(np.full(len(idx), part != 0))
     cur, ref0, vz, loose = (np.concatenate(a) for a in (cur, ref0, vz, loose))
     near = ref0[ref0[:, 0] < max(d, 1e-9)]

@@ -101,7 +101,7 @@ void write_vtu(const fs::path& path, const std::vector<double>& x, const std::ve
   std::vector<int> offsets, types;
   for (std::size_t c = 0; c < m; ++c) {
     offsets.push_back(static_cast<int>((c + 1) * per_cell));
-    types.push_back(per_cell == 4 ? 9 : 1);
+    types.push_back(per_cell == 8 ? 12 : per_cell == 4 ? 9 : 1);  // hexahedron, quad, vertex
   }
   array(o, "Int64", "connectivity", 1, conn);
   array(o, "Int64", "offsets", 1, offsets);
@@ -173,6 +173,79 @@ TEST(RunMetrics, CraterAndDamageOfASyntheticOutput) {
   EXPECT_EQ(m.at("max_damage_member"), "front wall");
   EXPECT_DOUBLE_EQ(std::stod(m.at("other_members_mean_damage")), 0.05);  // the roof
   EXPECT_DOUBLE_EQ(std::stod(m.at("energy_error")), 0.012);
+}
+
+// The same bowl in a 3-D quarter model (x, y >= 0 about the charge's vertical
+// axis, hexahedra of dz): r = sqrt(x^2 + y^2), each bin a ring. The ring's top
+// is its highest ground point, so the radius is the edge of the last bin whose
+// every point is depressed by more than dz / 2: the bowl's depression is dz / 2
+// at r* = R sqrt(1 - dz / (2 depth)), and the radius lies within one bin of it.
+TEST(RunMetrics, CraterOfASyntheticThreeDimensionalOutput) {
+  if (test::run_camouflet_raw("/usr/bin/python3 -c 'import numpy'").status != 0)
+    GTEST_SKIP() << "python3-numpy is not installed";
+  const fs::path dir = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "run_metrics_3d";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  constexpr double front = 1.0, back = 1.4, box_height = 0.3, half_width = 0.3;  // m
+  std::ofstream(dir / "case.toml") << "# generator: charge_mass_kg=1 burst_depth_m=" << depth_of_burst
+                                   << " standoff_m=" << front << " box_length_m=" << back - front
+                                   << " box_height_m=" << box_height << " wall_thickness_m=" << wall
+                                   << " top_depth_m=0 box_width_m=" << 2.0 * half_width << " three_d=1\n";
+  std::ofstream(dir / "summary.json") << "{\"final_time_s\": 0.01, \"stop_reason\": \"end time reached\"}\n";
+  const int n = 30, nz = 12;  // cells along x and y (1.5 m), and down (0.6 m)
+  const auto node = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  std::vector<double> x, u, damage;
+  std::vector<int> conn, material;
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const double px = i * dz, py = j * dz, pz = -nz * dz + k * dz, rho = std::hypot(px, py);
+        const double sink = rho < bowl_radius ? bowl_depth * (1.0 - (rho / bowl_radius) * (rho / bowl_radius)) : 0.0;
+        x.insert(x.end(), {px, py, pz - sink});
+        u.insert(u.end(), {0.0, 0.0, -sink});
+      }
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double xc = (i + 0.5) * dz, yc = (j + 0.5) * dz, zc = -nz * dz + (k + 0.5) * dz;
+        const bool in_box = xc > front && xc < back && yc < half_width && zc > -box_height;
+        if (in_box && xc > front + wall && xc < back - wall && yc < half_width - wall && zc < -wall &&
+            zc > -box_height + wall)
+          continue;  // the box is hollow
+        conn.insert(conn.end(), {node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
+                                 node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+                                 node(i, j + 1, k + 1)});
+        material.push_back(in_box ? 2 : std::hypot(xc, yc, zc + depth_of_burst) < 0.1 ? 1 : 0);
+        damage.push_back(0.0);
+      }
+  write_vtu(dir / "fields_0001.vtu", x, u, conn, 8, damage, material, false);
+  // Ejecta: soil particles from the bowl, now 1 m above the ground, at several azimuths.
+  std::vector<double> px, pu, pdamage;
+  std::vector<int> pconn, pmat;
+  for (int k = 0; k < 6; ++k) {
+    const double r = 0.025 + 0.1 * k, angle = 0.25 * k;
+    px.insert(px.end(), {r * std::cos(angle), r * std::sin(angle), 1.0});
+    pu.insert(pu.end(), {0.0, 0.0, 1.05});
+    pconn.push_back(k);
+    pmat.push_back(0);
+    pdamage.push_back(0.0);
+  }
+  write_vtu(dir / "particles_0001.vtu", px, pu, pconn, 1, pdamage, pmat, true);
+  std::ofstream(dir / "fields.pvd")
+      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+         "<DataSet timestep=\"0.01\" part=\"0\" file=\"fields_0001.vtu\"/>\n"
+         "<DataSet timestep=\"0.01\" part=\"1\" file=\"particles_0001.vtu\"/>\n"
+         "</Collection>\n</VTKFile>\n";
+
+  const auto m = metrics(dir);
+  ASSERT_TRUE(m.count("crater_radius_m")) << "no output";
+  const double rim = bowl_radius * std::sqrt(1.0 - dz / (2.0 * bowl_depth));
+  test::verify({"Apparent crater of a synthetic 3-D quarter bowl with ejecta above it: radius",
+                "where the bowl's depression is dz / 2 (by construction), within one ring bin dz = 0.05 m", rim,
+                std::stod(m.at("crater_radius_m")), dz, false, "m"});
+  test::verify({"Apparent crater of a synthetic 3-D quarter bowl with ejecta above it: depth",
+                "the bowl's depth (by construction)", bowl_depth, std::stod(m.at("crater_depth_m")), 1e-6, false,
+                "m"});
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "core/parameters.hpp"
 #include "materials/material.hpp"
 #include "model/reinforcement.hpp"
+#include "model/sph_options.hpp"
 
 namespace camouflet {
 
@@ -225,7 +226,7 @@ struct Model {
   std::vector<Part> parts;
   FemMesh mesh;
   ParticleSet particles;
-  Parameters sph;  // numerical SPH settings (the case's [sph] block), read by sph::read_sph_options
+  sph::SphOptions sph;  // numerical SPH settings (the case's [sph] block)
   std::vector<BoundaryCondition> boundaries;
   std::vector<Join> joins;        // SPH-FEM joins (coupling issue)
   std::vector<Contact> contacts;  // SPH-FEM sliding interfaces (coupling issue)

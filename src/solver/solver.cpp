@@ -122,9 +122,7 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode) {
   // SPH particles: same materials, own batches (sph/sph_system.hpp); symmetry
   // boundaries on axis-aligned planes reflect particles too.
   if (model.particles.count() > 0) {
-    Parameters sph_block = model.sph;
-    const sph::SphOptions options = sph::read_sph_options(sph_block);
-    sph_block.finish();
+    const sph::SphOptions& options = model.sph;
     if (mode_ == GeometryMode::axisymmetric && !options.volume_form)
       fmt::print(stderr,
                  "warning: [sph] volume_form = false in r-z: the particle columns next to the axis feel a "

@@ -15,9 +15,9 @@
 #include <numbers>
 #include <string>
 
-namespace camouflet::sph {
+#include "model/sph_options.hpp"
 
-enum class KernelKind { cubic_spline, wendland_c2 };
+namespace camouflet::sph {
 
 // "cubic_spline" / "wendland_c2"; throws std::invalid_argument for anything else
 // (the case reader turns that into an InputError naming the key).

@@ -1,79 +1,14 @@
 #pragma once
-// Numerical settings of the SPH package, with the defaults of the literature.
+// Reading the SPH package's settings (model/sph_options.hpp) from an [sph]
+// block, and the pair viscosity they set.
 #include "core/parameters.hpp"
+#include "model/sph_options.hpp"
 #include "sph/kernel.hpp"
 
 namespace camouflet::sph {
 
-struct SphOptions {
-  KernelKind kernel = KernelKind::cubic_spline;
-  // Initial smoothing length h0 = smoothing_factor x particle spacing. 1.2 puts
-  // ~2.4 spacings inside the support 2h: ~20 neighbours in 2-D, ~60 in 3-D
-  // (Monaghan 2005, Rep. Prog. Phys. 68, section 2.3 suggests h ~ 1.2-1.5 dx).
-  double smoothing_factor = 1.2;
-  // Variable smoothing length h = h0 (rho0 / rho)^(1/d) (Monaghan 2005, eq. 2.19
-  // in its SPH-summation form), kept within [h_min_factor, h_max_factor] x h0.
-  bool variable_smoothing_length = true;
-  double h_min_factor = 0.25;
-  double h_max_factor = 4.0;
-  // Monaghan artificial viscosity (Monaghan 1992, eq. 4.2): Pi_ij = (-alpha c mu + beta mu^2) / rho_ij.
-  double viscosity_alpha = 1.0;
-  double viscosity_beta = 2.0;
-  // Time-dependent viscosity (Morris & Monaghan 1997, J. Comput. Phys. 136, 41-50, "A switch
-  // to reduce SPH viscosity"): each particle carries its own alpha_i, relaxing to
-  // viscosity_alpha_min over tau = h / (viscosity_switch_decay c) and driven up towards
-  // viscosity_alpha by compression, d alpha/dt = -(alpha - alpha_min)/tau + max(-div v, 0)
-  // (alpha_max - alpha) (the (alpha_max - alpha) factor of Rosswog et al. 2000, MNRAS 317,
-  // 333). A pair uses alpha_ij = (alpha_i + alpha_j)/2 and beta_ij = beta alpha_ij / alpha_max.
-  // Off by default: alpha = viscosity_alpha everywhere.
-  bool viscosity_switch = false;
-  double viscosity_alpha_min = 0.1;
-  double viscosity_switch_decay = 0.2;
-  // Artificial stress against the tensile instability (Gray, Monaghan & Swift
-  // 2001, CMAME 190, eqs. 3.1-3.3; Monaghan 2000, JCP 159): R = -eps sigma'/rho^2
-  // on tensile principal stresses, weighted by (W(r)/W(dp))^n. Its pair work
-  // is booked in the internal energy (kick()), so the energy balance closes.
-  // On by default: without it an elastic plate in tension clumps and its
-  // vibration is destroyed within a period (tests/sph/test_tensile_stability.cpp);
-  // its price is a softening of tensile stress by ~eps/2 (docs/theory/sph.md).
-  bool artificial_stress = true;
-  double artificial_stress_epsilon = 0.3;
-  double artificial_stress_power = 4.0;
-  // Artificial thermal conductivity (Price 2008, J. Comput. Phys. 227, 10040,
-  // eqs. 28 and 30): du_i/dt = sum_j m_j alpha_u v_sig (u_i - u_j) / rho_ij dW/dr,
-  // v_sig = sqrt(|p_i - p_j| / rho_ij), between particles of one EOS type
-  // (their specific energies share a reference). It spreads a spike of
-  // specific energy that the particles cannot resolve (a point blast's few
-  // hot particles keep most of its energy without it: docs/theory/sph.md,
-  // "Sedov"). Pairwise antisymmetric, so energy is conserved exactly.
-  // 0 = off (default); Price recommends alpha_u ~ 1.
-  double conductivity = 0.0;
-  // Momentum/continuity pair (sph_system.hpp): true = volume form (Colagrossi &
-  // Landrini 2003), robust at density jumps; false = classic density form
-  // sigma_i/rho_i^2 + sigma_j/rho_j^2 (Monaghan 1992). In r-z only the volume
-  // form gives the images across the axis their signed ring weight (the first
-  // particle columns then feel the right stress divergence); the density form
-  // keeps |r| there (its r_j weight multiplies sigma_i, which the images cannot
-  // carry), and the solver warns (docs/theory/sph.md, "The first columns").
-  bool volume_form = true;
-  // XSPH velocity smoothing for the position update (Monaghan 1989); 0 = off.
-  double xsph = 0.0;
-  // Kernel-gradient correction of the velocity gradient (Randles & Libersky
-  // 1996, CMAME 139; Bonet & Lok 1999): exact for linear velocity fields.
-  bool kernel_correction = false;
-  // Neighbour-list skin as a fraction of the smallest initial smoothing length.
-  double skin_factor = 0.3;
-  // Re-sort the particles in memory by neighbour-search cell after this many
-  // list rebuilds (0 = never), so that the neighbour sums read memory nearly
-  // in order. Results change only by round-off (the order of the sums); ids
-  // in output, gauges and checkpoints are unaffected, but code that keeps
-  // per-particle arrays by memory index across steps must map them through
-  // ParticleArrays::id. Off by default: fills are generated in cell order
-  // already, and the gain appears only after heavy mixing (docs/theory/sph.md).
-  int sort_interval = 0;
-};
-
-// Linear and quadratic viscosity coefficients of a pair from the particles' alpha (see above).
+// Linear and quadratic viscosity coefficients of a pair from the particles' alpha
+// (SphOptions::viscosity_switch).
 struct PairViscosity {
   double alpha = 0.0, beta = 0.0;
 };
@@ -83,7 +18,7 @@ inline PairViscosity pair_viscosity(const SphOptions& o, double alpha_i, double 
   return {a, o.viscosity_beta * a / o.viscosity_alpha};
 }
 
-// Reads the optional keys of an `[sph]` block (names as the members above;
+// Reads the optional keys of an `[sph]` block (names as SphOptions' members;
 // `kernel` a string). Bounds inverted or out of range -> InputError naming the key.
 SphOptions read_sph_options(Parameters& block);
 

@@ -69,7 +69,7 @@ inline Model axis_column(int columns, const ElasticConstants& c, bool from_top =
   BlockSpec block{"bar", 0, {0, 0, 0}, {width, length, 0}, {columns, static_cast<int>(length / cell), 1}};
   Model model = block_model(GeometryMode::axisymmetric, {block}, c);
   make_joined_zone(model, zone_box(model, cell, {0.0, 0.4, 0.0}, {width, 0.8, 0.0}));
-  model.sph.set_bool("viscosity_switch", true);  // as the plane-pulse tests of test_join.cpp
+  model.sph.viscosity_switch = true;  // as the plane-pulse tests of test_join.cpp
   BoundaryCondition drive = velocity(from_top ? "bar.ymax" : "bar.ymin", 1, from_top ? -1.0 : 1.0);
   drive.history = sin2_pulse(0.1 / c.p_wave_speed());
   model.boundaries.push_back(drive);
@@ -126,7 +126,7 @@ struct ColumnSection {
 
 // cell: element size (m); spacing: particle spacing (m).
 template <int D>
-JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const Parameters& sph = {},
+JoinCrossing join_crossing(GeometryMode mode, double cell, double spacing, const sph::SphOptions& sph = {},
                            ColumnSection section = {}) {
   use_threads(1);
   const ElasticConstants c;

@@ -17,9 +17,9 @@ namespace {
 // The viscosity switch (SphOptions::viscosity_switch, Morris & Monaghan 1997): alpha relaxes to
 // 0.1 in the smooth pulse instead of damping it with alpha = 1 (0.91 of the amplitude left
 // after 10 particles with alpha = 1, 0.99 with the switch).
-Parameters with_switch() {
-  Parameters sph;
-  sph.set_bool("viscosity_switch", true);
+sph::SphOptions with_switch() {
+  sph::SphOptions sph;
+  sph.viscosity_switch = true;
   return sph;
 }
 

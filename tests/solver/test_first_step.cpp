@@ -60,7 +60,7 @@ TEST(FirstStep, ParticlesVoteWithTheInitialVelocity) {
   const TimeStepLimit& limit = solver.time_step_limit();
   ASSERT_NE(limit.reason.find("particle"), std::string::npos) << limit.reason;
   // h/(c + |v| + viscosity): no compression yet, so the viscosity adds 0.6 alpha c.
-  const sph::SphOptions options = sph::read_sph_options(model.sph);
+  const sph::SphOptions options = model.sph;
   const double h = options.smoothing_factor * dx;
   const double expected =
       model.run.cfl * h / (gas_sound_speed + inflow_speed + 0.6 * options.viscosity_alpha * gas_sound_speed);

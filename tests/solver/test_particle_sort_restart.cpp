@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 Model sorted_particle_model(std::int64_t max_cycles, int sort_interval) {
   Model model = test::colliding_particle_blocks(max_cycles);
-  model.sph.set_number("sort_interval", sort_interval);
+  model.sph.sort_interval = sort_interval;
   GaugeGroup follow, fixed;
   follow.name = "follow";
   follow.points.push_back({"middle", {0.06, 0.02, 0.0}, {}});

@@ -54,8 +54,8 @@ SedovResult run_sedov(double dx) {
   Model model;
   model.run.mode = GeometryMode::axisymmetric;
   model.run.cfl = 0.3;
-  model.sph.set_number("smoothing_factor", 1.5);
-  model.sph.set_bool("kernel_correction", true);
+  model.sph.smoothing_factor = 1.5;
+  model.sph.kernel_correction = true;
   // Cold gas everywhere first; the hot particles are moved to a second part below.
   test::add_sph_part(model, "cold", test::ideal_gas("cold", rho0, gamma, 0.0),
                      test::box_fill({0, -1, 0}, {1, 1, 0}, dx));

@@ -24,32 +24,15 @@
 // points there no longer have (a local error of the order of 1 - n, a few per
 // cent of the traction on those points).
 #include <algorithm>
-#include <map>
 
+#include "coupling/element_faces.hpp"
 #include "coupling/sph_fem_join.hpp"
 #include "core/error.hpp"
 
 namespace camouflet {
-namespace {
-
-constexpr int quad_faces[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-constexpr int hex_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-
-// Local face f of element e (the node order of find_interface_faces).
-template <int D, std::size_t FN>
-std::array<std::int64_t, FN> element_face(const FemElements<D>& elements, std::size_t e, int f) {
-  constexpr int N = FemElements<D>::nodes;
-  std::array<std::int64_t, FN> q{};
-  for (std::size_t a = 0; a < FN; ++a)
-    q[a] = elements.connectivity[e * N + static_cast<std::size_t>(D == 2 ? quad_faces[f][a] : hex_faces[f][a])];
-  return q;
-}
-
-}  // namespace
 
 template <int D>
 void SphFemJoin<D>::keep_setup_interface() {
-  constexpr int faces_per_element = D == 2 ? 4 : 6;
   const FemElements<D>& el = *elements_;
   setup_faces_ = faces_;
   setup_face_element_ = face_element_;
@@ -58,23 +41,10 @@ void SphFemJoin<D>::keep_setup_interface() {
   std::int64_t node_count = 0;
   for (const std::int64_t n : el.connectivity) node_count = std::max(node_count, n + 1);
   x_setup_.assign(x_, x_ + node_count * D);
-  // Face neighbours of every element (a face is shared by at most two).
+  // The face neighbours (neighbour_) were found with the interface (find_interface_faces).
   joined_element_.assign(el.size(), 0);
   for (const Point& pt : points_) joined_element_[pt.element] = 1;
   for (const std::int64_t e : face_element_) joined_element_[static_cast<std::size_t>(e)] = 1;
-  std::map<std::array<std::int64_t, face_nodes>, std::int64_t> first;
-  neighbour_.assign(el.size() * faces_per_element, -1);
-  for (std::size_t e = 0; e < el.size(); ++e)
-    for (int f = 0; f < faces_per_element; ++f) {
-      auto key = element_face<D, face_nodes>(el, e, f);
-      std::sort(key.begin(), key.end());
-      const auto [it, inserted] = first.try_emplace(key, static_cast<std::int64_t>(e * faces_per_element + f));
-      if (inserted) continue;
-      const auto other = static_cast<std::size_t>(it->second);
-      neighbour_[e * faces_per_element + static_cast<std::size_t>(f)] =
-          static_cast<std::int64_t>(other / faces_per_element);
-      neighbour_[other] = static_cast<std::int64_t>(e);
-    }
 }
 
 template <int D>
@@ -114,7 +84,7 @@ void SphFemJoin<D>::follow_erosion() {
     for (int f = 0; f < faces_per_element; ++f) {
       const std::int64_t other = neighbour_[e * faces_per_element + static_cast<std::size_t>(f)];
       if (other < 0 || !open[static_cast<std::size_t>(other)]) continue;
-      faces_.push_back(element_face<D, face_nodes>(el, e, f));
+      faces_.push_back(join_faces::nodes<D>(el, e, f));
       face_element_.push_back(static_cast<std::int64_t>(e));
     }
   }

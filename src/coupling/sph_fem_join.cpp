@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "core/sym_tensor_vec.hpp"
+#include "coupling/element_faces.hpp"
 #include "sph/artificial_stress.hpp"
 
 namespace camouflet {
@@ -195,28 +195,10 @@ template <int D>
 void SphFemJoin<D>::find_interface_faces(
     const Model& model, const FemElements<D>& elements, const sph::SphSystem<D>& particles,
     const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins, double reach) {
-  constexpr int N = FemElements<D>::nodes;
   constexpr int FN = face_nodes;
-  // Local faces of quad4 (edges, counter-clockwise) and hex8.
-  static const int quad_faces[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const int hex_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                      {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  std::map<std::array<std::int64_t, FN>, int> count;
-  auto local = [&](std::size_t e, int f) {
-    std::array<std::int64_t, FN> q{};
-    for (int a = 0; a < FN; ++a)
-      q[static_cast<std::size_t>(a)] =
-          elements
-              .connectivity[e * N + static_cast<std::size_t>(D == 2 ? quad_faces[f][a] : hex_faces[f][a])];
-    return q;
-  };
-  constexpr int faces_per_element = D == 2 ? 4 : 6;
-  for (std::size_t e = 0; e < elements.size(); ++e)
-    for (int f = 0; f < faces_per_element; ++f) {
-      auto q = local(e, f);
-      std::sort(q.begin(), q.end());
-      ++count[q];
-    }
+  constexpr int faces_per_element = join_faces::per_element<D>;
+  // The element across each face: also what follow_erosion() walks (keep_setup_interface).
+  neighbour_ = join_faces::neighbours(elements);
   std::vector<char> joined(model.parts.size(), 0);
   for (const Join& join : model.joins)
     for (int p : join.fem_parts) joined[static_cast<std::size_t>(p)] = 1;
@@ -226,10 +208,8 @@ void SphFemJoin<D>::find_interface_faces(
     if (!joined[static_cast<std::size_t>(model.mesh.element_part[e])]) continue;
     const Vec<D> ce = element_centre(e);
     for (int f = 0; f < faces_per_element; ++f) {
-      const auto q = local(e, f);
-      auto key = q;
-      std::sort(key.begin(), key.end());
-      if (count[key] != 1) continue;  // shared by two elements: not on the boundary
+      if (neighbour_[e * faces_per_element + static_cast<std::size_t>(f)] >= 0) continue;  // not on the boundary
+      const auto q = join_faces::nodes<D>(elements, e, f);
       Vec<D> cf{};
       for (int a = 0; a < FN; ++a)
         for (int i = 0; i < D; ++i) cf[i] += x_[q[static_cast<std::size_t>(a)] * D + i] / FN;

@@ -93,43 +93,13 @@ void SphSystem<D>::compute_correction() {
 template <int D>
 void SphSystem<D>::update_state(double dt, double time) {
   const std::size_t n = p_.real;
-  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   prepare_neighbours();
-  const auto& x = p_.position;
-  const auto& v = p_.velocity;
-  const auto& m = p_.mass;
-  const auto& h = p_.smoothing_length;
-  // Scratch kept between steps (no allocation in the cycle): every entry is written before it is read.
-  auto& x_end = scratch_x_;
-  x_end.resize(n);
-  auto& eta_start = scratch_eta_;
-  eta_start.resize(n);
-
-  // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
-  // with v(n+1/2), and with the pair weights (m_j / eta_j) at mid-step too:
-  // eta(n+1/2) predicted from the last step's rate of eta (the trace of the
-  // strain rate it produced, without the hoop term). Weights at eta(n) would
-  // make the p dV work lag the kinetic energy the forces exchange by a
-  // first-order term, which in a fast expansion (a detonation's products)
-  // creates energy in proportion to the time step.
-  const int planar_axes = axisymmetric ? 2 : D;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    x_end[i] = p_.position[i];
-    p_.position[i] -= p_.velocity[i] * (0.5 * dt);
-    eta_start[i] = p_.planar_density[i];
-    const SymTensor& d_last = p_.strain_rate[i];
-    const double rate_last = -(d_last.xx + d_last.yy + (planar_axes == 3 ? d_last.zz : 0.0));
-    p_.planar_density[i] *= std::exp(0.5 * dt * rate_last);
-  }
+  predict_mid_step(dt);
   refresh_ghosts();
   const bool corrected = options_.kernel_correction;
   if (corrected) compute_correction();
   refresh_active_pairs();
   size_point_factors();
-  const bool volume_form = options_.volume_form;
-  const auto& volume = point_volume_;
-  const auto& inv_eta = inverse_density_;
   // Pair-symmetric like force_pass(): v_ji (x) grad_j W_ji = v_ij (x) grad_i W_ij, so each
   // pair of particles is evaluated once and adds to both with its own weight
   // (volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j).
@@ -138,7 +108,6 @@ void SphSystem<D>::update_state(double dt, double time) {
   const std::size_t n_blocks = blocks.count();
   kinematic_sums_.prepare(blocks, n);
   std::size_t limited = 0;
-  const MaterialContext ctx{dt, time};
   // One parallel region from the point factors to the material batches (docs/performance.md,
   // "Fewer parallel regions"): the point factors (barrier), the rows (barrier), then
   // each row's sums, its end-of-step eta, h and x and its material point's inputs in one pass.
@@ -150,50 +119,10 @@ void SphSystem<D>::update_state(double dt, double time) {
     for (std::size_t k = 0; k < n_blocks; ++k) {
       KinematicSum* const own = kinematic_sums_.zeroed(blocks, k);
       for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
-        if (!corrected) {  // SIMD lanes (pair_lanes.cpp), the same sums
-          kinematics_row_lanes(i, own);
-          continue;
-        }
-        KinematicSum mine;
-        for (const std::uint32_t j : active_upper_neighbours(i)) {
-          const Vec<D> dx = x[i] - x[j];
-          const double r2 = dot(dx, dx);
-          const double hij = pair_smoothing_length(h[i], h[j]);
-          if (r2 >= support_factor * support_factor * hij * hij) continue;
-          const Vec<D> grad = dx * kernel_.pair_terms(std::sqrt(r2), 1.0 / hij).gradient_factor;
-          const Vec<D> dv = v[i] - v[j];
-          const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
-          const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
-          const bool both = j < n;
-          if (corrected) {
-            // Continuity with the pair gradient of the momentum sum (conjugate);
-            // L with each particle's own correction, exact for linear fields.
-            const double rate = dot(dv, pair_gradient(i, j, grad));
-            const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
-            mine.rate += weight_i * rate;
-            for (int a = 0; a < D; ++a)
-              for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
-            if (both) {
-              const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
-              own[j].rate += weight_j * rate;
-              for (int a = 0; a < D; ++a)
-                for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
-            }
-          } else {
-            const double rate = dot(dv, grad);
-            mine.rate += weight_i * rate;
-            for (int a = 0; a < D; ++a)
-              for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * grad[b];
-            if (both) {
-              own[j].rate += weight_j * rate;
-              for (int a = 0; a < D; ++a)
-                for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * grad[b];
-            }
-          }
-        }
-        own[i].rate += mine.rate;
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
+        if (corrected)
+          corrected_kinematics_row(i, own);
+        else
+          kinematics_row_lanes(i, own);  // SIMD lanes (pair_lanes.cpp), the same sums
       }
     }
     auto add = [](KinematicSum& total, const KinematicSum& part) {
@@ -203,66 +132,140 @@ void SphSystem<D>::update_state(double dt, double time) {
     };
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t k = 0; k < n_blocks; ++k)
-      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
-        const KinematicSum total = kinematic_sums_.total(blocks, k, i, add);
-        const double eta_rate = total.rate;
-        double L[3][3] = {};
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
-        // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
-        // matches the momentum sum (energy-consistent).
-        if (axisymmetric) L[2][2] = v[i][0] / x[i][0];  // hoop strain rate v_r / r
-        SymTensor d{L[0][0],
-                    L[1][1],
-                    L[2][2],
-                    0.5 * (L[0][1] + L[1][0]),
-                    0.5 * (L[1][2] + L[2][1]),
-                    0.5 * (L[2][0] + L[0][2])};
-        p_.strain_rate[i] = d;
-        if (options_.viscosity_switch) {
-          // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
-          // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
-          const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
-          const double source = std::max(-d.trace(), 0.0);
-          const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
-          const double b = 1.0 / tau + source;
-          const double target = a / b;
-          p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
-        }
-        p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
-        // Continuity, integrated as d ln(eta) so that eta stays positive.
-        const double eta_new = eta_start[i] * std::exp(dt * eta_rate);
-        double hi = h[i];
-        if (options_.variable_smoothing_length) {
-          const double h0 = p_.reference_smoothing_length[i];
-          hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new, 1.0 / D);
-          hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
-        }
-        // Row i's own entries only (the other rows' sums do not read them): end of the step.
-        p_.planar_density[i] = eta_new;
-        p_.smoothing_length[i] = hi;
-        p_.position[i] = x_end[i];
-        if (eta_new < m[i] * kernel_.value(0.0, hi)) ++limited;
-        // The shared constitutive update's inputs: row i's slot in its material's batch.
-        MaterialPoints& pts = batches_[p_.material[i]];
-        const std::size_t slot = p_.slot[i];
-        const double rho = eta_new / geometric_weight(x_end[i]);
-        pts.density_previous[slot] = p_.density[i];
-        pts.density[slot] = rho;
-        pts.strain_rate[slot] = d;
-        pts.spin[slot] = p_.spin[i];
-        pts.artificial_viscosity[slot] = 0.0;  // SPH viscosity is pairwise: its heating is added below
-        pts.characteristic_length[slot] = hi;
-        pts.specific_energy[slot] += p_.heating[i];
-        p_.heating[i] = 0.0;
-        p_.density[i] = rho;
-      }
+      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i)
+        if (!end_step_of_row(i, kinematic_sums_.total(blocks, k, i, add), dt)) ++limited;
   }
   refresh_ghosts();
   volume_limited_ = limited;
   correction_current_ = false;
   pair_dissipation_current_ = false;
+  update_material_batches(MaterialContext{dt, time});
+}
 
+template <int D>
+void SphSystem<D>::predict_mid_step(double dt) {
+  // The rates are evaluated at the mid-step positions x(n+1/2) = x(n+1) - v dt/2
+  // with v(n+1/2), and with the pair weights (m_j / eta_j) at mid-step too:
+  // eta(n+1/2) predicted from the last step's rate of eta (the trace of the
+  // strain rate it produced, without the hoop term). Weights at eta(n) would
+  // make the p dV work lag the kinetic energy the forces exchange by a
+  // first-order term, which in a fast expansion (a detonation's products)
+  // creates energy in proportion to the time step.
+  const std::size_t n = p_.real;
+  // Scratch kept between steps (no allocation in the cycle): every entry is written before it is read.
+  scratch_x_.resize(n);
+  scratch_eta_.resize(n);
+  const int planar_axes = mode_ == GeometryMode::axisymmetric ? 2 : D;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    scratch_x_[i] = p_.position[i];
+    p_.position[i] -= p_.velocity[i] * (0.5 * dt);
+    scratch_eta_[i] = p_.planar_density[i];
+    const SymTensor& d_last = p_.strain_rate[i];
+    const double rate_last = -(d_last.xx + d_last.yy + (planar_axes == 3 ? d_last.zz : 0.0));
+    p_.planar_density[i] *= std::exp(0.5 * dt * rate_last);
+  }
+}
+
+template <int D>
+void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
+  // Continuity with the pair gradient of the momentum sum (conjugate); L with each
+  // particle's own correction, exact for linear fields. The uncorrected row runs on
+  // SIMD lanes (kinematics_row_lanes).
+  const std::size_t n = p_.real;
+  const auto& x = p_.position;
+  const auto& v = p_.velocity;
+  const auto& m = p_.mass;
+  const auto& h = p_.smoothing_length;
+  const bool volume_form = options_.volume_form;
+  const auto& volume = point_volume_;
+  const auto& inv_eta = inverse_density_;
+  KinematicSum mine;
+  for (const std::uint32_t j : active_upper_neighbours(i)) {
+    const Vec<D> dx = x[i] - x[j];
+    const double r2 = dot(dx, dx);
+    const double hij = pair_smoothing_length(h[i], h[j]);
+    if (r2 >= support_factor * support_factor * hij * hij) continue;
+    const Vec<D> grad = dx * kernel_.pair_terms(std::sqrt(r2), 1.0 / hij).gradient_factor;
+    const Vec<D> dv = v[i] - v[j];
+    const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
+    const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
+    const double rate = dot(dv, pair_gradient(i, j, grad));
+    const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
+    mine.rate += weight_i * rate;
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
+    if (j < n) {
+      const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
+      own[j].rate += weight_j * rate;
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
+    }
+  }
+  own[i].rate += mine.rate;
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
+}
+
+template <int D>
+bool SphSystem<D>::end_step_of_row(std::size_t i, const KinematicSum& total, double dt) {
+  const auto& x_end = scratch_x_;
+  const auto& h = p_.smoothing_length;
+  const double eta_rate = total.rate;
+  double L[3][3] = {};
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
+  // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
+  // matches the momentum sum (energy-consistent).
+  if (mode_ == GeometryMode::axisymmetric) L[2][2] = p_.velocity[i][0] / p_.position[i][0];  // hoop: v_r / r
+  SymTensor d{L[0][0],
+              L[1][1],
+              L[2][2],
+              0.5 * (L[0][1] + L[1][0]),
+              0.5 * (L[1][2] + L[2][1]),
+              0.5 * (L[2][0] + L[0][2])};
+  p_.strain_rate[i] = d;
+  if (options_.viscosity_switch) {
+    // Morris & Monaghan (1997) over the step with frozen coefficients, solved exactly:
+    // d alpha/dt = a - b alpha stays within [alpha_min, alpha_max] for any dt.
+    const double tau = h[i] / (options_.viscosity_switch_decay * std::max(p_.wave_speed[i], 1e-30));
+    const double source = std::max(-d.trace(), 0.0);
+    const double a = options_.viscosity_alpha_min / tau + source * options_.viscosity_alpha;
+    const double b = 1.0 / tau + source;
+    const double target = a / b;
+    p_.viscosity_alpha[i] = target + (p_.viscosity_alpha[i] - target) * std::exp(-b * dt);
+  }
+  p_.spin[i] = Spin{0.5 * (L[0][1] - L[1][0]), 0.5 * (L[1][2] - L[2][1]), 0.5 * (L[2][0] - L[0][2])};
+  // Continuity, integrated as d ln(eta) so that eta stays positive.
+  const double eta_new = scratch_eta_[i] * std::exp(dt * eta_rate);
+  double hi = h[i];
+  if (options_.variable_smoothing_length) {
+    const double h0 = p_.reference_smoothing_length[i];
+    hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new, 1.0 / D);
+    hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
+  }
+  // Row i's own entries only (the other rows' sums do not read them): end of the step.
+  p_.planar_density[i] = eta_new;
+  p_.smoothing_length[i] = hi;
+  p_.position[i] = x_end[i];
+  // The shared constitutive update's inputs: row i's slot in its material's batch.
+  MaterialPoints& pts = batches_[p_.material[i]];
+  const std::size_t slot = p_.slot[i];
+  const double rho = eta_new / geometric_weight(x_end[i]);
+  pts.density_previous[slot] = p_.density[i];
+  pts.density[slot] = rho;
+  pts.strain_rate[slot] = d;
+  pts.spin[slot] = p_.spin[i];
+  pts.artificial_viscosity[slot] = 0.0;  // SPH viscosity is pairwise: its heating is added below
+  pts.characteristic_length[slot] = hi;
+  pts.specific_energy[slot] += p_.heating[i];
+  p_.heating[i] = 0.0;
+  p_.density[i] = rho;
+  return !(eta_new < p_.mass[i] * kernel_.value(0.0, hi));
+}
+
+template <int D>
+void SphSystem<D>::update_material_batches(const MaterialContext& ctx) {
   // The shared constitutive update, one batch per material.
   for (std::size_t mat = 0; mat < batches_.size(); ++mat) {
     auto& pts = batches_[mat];

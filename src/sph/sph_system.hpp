@@ -308,6 +308,14 @@ class SphSystem {
   std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by fill_point_factors()
   void force_row_lanes(std::size_t i, ForceSum* own);
   void kinematics_row_lanes(std::size_t i, KinematicSum* own);
+  // The stages of update_state() (sph_kinematics.cpp): x and eta to mid-step; row i's
+  // kinematic sums with the kernel correction (scalar); row i's end of the step from its
+  // summed rates (strain rate, spin, viscosity switch, eta, h, x(n+1), its material point's
+  // inputs), false where eta fell below the particle's own kernel term; the material update.
+  void predict_mid_step(double dt);
+  void corrected_kinematics_row(std::size_t i, KinematicSum* own);
+  bool end_step_of_row(std::size_t i, const KinematicSum& total, double dt);
+  void update_material_batches(const MaterialContext& ctx);
   BlockSums<double> heat_sums_;
   struct alignas(32) HeatPoint {  // what kick()'s heating loop reads of a neighbour
     Vec<D> velocity_sum;          // m/s, v(n-1/2) + v(n+1/2)

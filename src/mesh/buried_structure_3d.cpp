@@ -31,10 +31,6 @@ struct Grid {
   std::vector<Interval> depth;  // depth = -z, from the ground down
 };
 
-bool has_sph_zone(const BuriedStructureSpec& s) {
-  return s.sph_radius > 0.0;
-}
-
 double side_of(const BuriedStructureSpec& s) {
   return s.domain_side > 0.0 ? s.domain_side : s.domain_radius;
 }

@@ -1,13 +1,19 @@
 #pragma once
 // Shared between the axisymmetric (buried_structure.cpp) and the 3-D
-// (buried_structure_3d.cpp) buried-structure generators, with the case-file
-// tables both write in buried_case_tables.cpp; not a public interface.
+// (buried_structure_3d.cpp) buried-structure generators, with the checks and
+// derived sizes both use in buried_checks.cpp and the case-file tables both
+// write in buried_case_tables.cpp; not a public interface.
 #include <string>
 #include <vector>
 
 #include "mesh/buried_structure.hpp"
 
 namespace camouflet::buried_detail {
+
+// Whether the near field is an SPH zone (sph.radius > 0) rather than FEM.
+inline bool has_sph_zone(const BuriedStructureSpec& s) {
+  return s.sph_radius > 0.0;
+}
 
 // The checks both geometries share (charge buried, structure clear of the
 // charge and of the near-field and SPH zones, domain holds them, sizes

@@ -109,6 +109,35 @@ void write_vtu(const fs::path& path, const std::vector<double>& x, const std::ve
   o << "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 }
 
+// Ejecta: six soil particles from the bowl, now about 1 m above the ground (in
+// 3-D at several azimuths), which must not fill the crater; and fields.pvd
+// naming the mesh snapshot fields_0001.vtu and these particles at t = 0.01 s
+// (in r-z after an entry at t = 0 whose file is missing, which must not matter).
+void write_ejecta_and_collection(const fs::path& dir, bool three_d) {
+  std::vector<double> px, pu, pdamage;
+  std::vector<int> pconn, pmat;
+  for (int k = 0; k < 6; ++k) {
+    const double r = 0.025 + 0.1 * k, angle = 0.25 * k;
+    if (three_d) {
+      px.insert(px.end(), {r * std::cos(angle), r * std::sin(angle), 1.0});
+      pu.insert(pu.end(), {0.0, 0.0, 1.05});
+    } else {
+      px.insert(px.end(), {r, 1.0, 0.0});
+      pu.insert(pu.end(), {0.0, 1.05, 0.0});
+    }
+    pconn.push_back(k);
+    pmat.push_back(0);
+    pdamage.push_back(0.0);
+  }
+  write_vtu(dir / "particles_0001.vtu", px, pu, pconn, 1, pdamage, pmat, true);
+  std::ofstream(dir / "fields.pvd")
+      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+      << (three_d ? "" : "<DataSet timestep=\"0\" part=\"0\" file=\"missing_0000.vtu\"/>\n")
+      << "<DataSet timestep=\"0.01\" part=\"0\" file=\"fields_0001.vtu\"/>\n"
+         "<DataSet timestep=\"0.01\" part=\"1\" file=\"particles_0001.vtu\"/>\n"
+         "</Collection>\n</VTKFile>\n";
+}
+
 // run_metrics(folder) as {key: text}.
 std::map<std::string, std::string> metrics(const fs::path& dir) {
   const std::string script = std::string(CAMOUFLET_SOURCE_DIR) + "/scripts";
@@ -138,25 +167,7 @@ TEST(RunMetrics, CraterAndDamageOfASyntheticOutput) {
   std::vector<double> x(g.ref.size());
   for (std::size_t k = 0; k < x.size(); ++k) x[k] = g.ref[k] + g.u[k];
   write_vtu(dir / "fields_0001.vtu", x, g.u, g.conn, 4, g.damage, g.material, false);
-  // Ejecta: soil particles from the bowl, now 1 m above it; and one soil particle in place far out.
-  std::vector<double> px, pu;
-  std::vector<int> pconn, pmat;
-  std::vector<double> pdamage;
-  for (int k = 0; k < 6; ++k) {
-    const double r = 0.025 + 0.1 * k;
-    px.insert(px.end(), {r, 1.0, 0.0});
-    pu.insert(pu.end(), {0.0, 1.05, 0.0});
-    pconn.push_back(k);
-    pmat.push_back(0);
-    pdamage.push_back(0.0);
-  }
-  write_vtu(dir / "particles_0001.vtu", px, pu, pconn, 1, pdamage, pmat, true);
-  std::ofstream(dir / "fields.pvd")
-      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
-         "<DataSet timestep=\"0\" part=\"0\" file=\"missing_0000.vtu\"/>\n"
-         "<DataSet timestep=\"0.01\" part=\"0\" file=\"fields_0001.vtu\"/>\n"
-         "<DataSet timestep=\"0.01\" part=\"1\" file=\"particles_0001.vtu\"/>\n"
-         "</Collection>\n</VTKFile>\n";
+  write_ejecta_and_collection(dir, false);
 
   const auto m = metrics(dir);
   ASSERT_TRUE(m.count("crater_radius_m")) << "no output";
@@ -219,23 +230,7 @@ TEST(RunMetrics, CraterOfASyntheticThreeDimensionalOutput) {
         damage.push_back(0.0);
       }
   write_vtu(dir / "fields_0001.vtu", x, u, conn, 8, damage, material, false);
-  // Ejecta: soil particles from the bowl, now 1 m above the ground, at several azimuths.
-  std::vector<double> px, pu, pdamage;
-  std::vector<int> pconn, pmat;
-  for (int k = 0; k < 6; ++k) {
-    const double r = 0.025 + 0.1 * k, angle = 0.25 * k;
-    px.insert(px.end(), {r * std::cos(angle), r * std::sin(angle), 1.0});
-    pu.insert(pu.end(), {0.0, 0.0, 1.05});
-    pconn.push_back(k);
-    pmat.push_back(0);
-    pdamage.push_back(0.0);
-  }
-  write_vtu(dir / "particles_0001.vtu", px, pu, pconn, 1, pdamage, pmat, true);
-  std::ofstream(dir / "fields.pvd")
-      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
-         "<DataSet timestep=\"0.01\" part=\"0\" file=\"fields_0001.vtu\"/>\n"
-         "<DataSet timestep=\"0.01\" part=\"1\" file=\"particles_0001.vtu\"/>\n"
-         "</Collection>\n</VTKFile>\n";
+  write_ejecta_and_collection(dir, true);
 
   const auto m = metrics(dir);
   ASSERT_TRUE(m.count("crater_radius_m")) << "no output";

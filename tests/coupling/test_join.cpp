@@ -2,8 +2,8 @@
 // elastic P-pulse crosses FEM -> SPH -> FEM in one material. The join is not a
 // material interface: reflections below 5 % of the incident amplitude,
 // transmission within 5 %, total energy within 1 % over the crossing, also with
-// graded particles (spacing ratio 2 against the elements; the issue asks for a
-// reflection below 10 % there).
+// graded particles (spacing ratio 2 against the elements, where the reflection is held below
+// 10 %).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

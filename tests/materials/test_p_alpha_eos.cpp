@@ -52,7 +52,7 @@ TEST(PAlphaEos, InitialStateIsStressFreeWithPorousSoundSpeed) {
 TEST(PAlphaEos, HydrostaticCompactionFollowsTheCrushLaw) {
   test::PointDriver d(test::concrete_35mpa());
   const std::vector<double> targets{0.1e9, 1.0e9, 3.0e9, 6.0e9};
-  const std::vector<double> issue_quote{2328.0, 2477.0, 2686.0, 2750.0};
+  const std::vector<double> quoted_density{2328.0, 2477.0, 2686.0, 2750.0};
   std::size_t next = 0;
   double p_prev = d.pressure(), rho_prev = d.density(), e_prev = d.points().specific_energy[0];
   const double alpha_slot = static_cast<double>(d.points().history.slot("plastic_distension"));
@@ -72,9 +72,9 @@ TEST(PAlphaEos, HydrostaticCompactionFollowsTheCrushLaw) {
               "closed-form P-alpha law alpha(p) with the polynomial solid EOS (Wang et al. 2005 eqs. 34-35)",
               reference, rho_at, 0.005, true, "kg/m^3"});
       std::printf(
-          "p = %.1f GPa: rho = %.1f (closed form %.1f; issue quotes %.0f = rho_s/alpha(p), "
+          "p = %.1f GPa: rho = %.1f (closed form %.1f; quoted %.0f = rho_s/alpha(p), "
           "without the matrix compression), e = %.0f J/kg\n",
-          targets[next] / 1e9, rho_at, reference, issue_quote[next], e_at);
+          targets[next] / 1e9, rho_at, reference, quoted_density[next], e_at);
       ++next;
     }
     p_prev = p;

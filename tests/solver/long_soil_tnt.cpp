@@ -202,7 +202,7 @@ bool within_band(const GroundShock& g, double coupling, std::string& outside) {
 double attenuation_exponent(const GroundShock& g) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
   for (std::size_t s = 0; s < g.scaled.size(); ++s) {
-    if (g.scaled[s] < 0.5) continue;  // the range, Z = 0.5-2.5
+    if (g.scaled[s] < 0.5) continue;  // the TM-5 fit's range here, Z = 0.5-2.5
     n += 1.0;
     const double lx = std::log(g.scaled[s]), ly = std::log(g.peak[s]);
     sx += lx;

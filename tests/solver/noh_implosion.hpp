@@ -36,6 +36,14 @@
 
 namespace camouflet::test {
 
+// The axis of an r-z model on a node set (r = 0 held).
+inline BoundaryCondition axis_condition(const std::string& set) {
+  BoundaryCondition bc;
+  bc.kind = BoundaryKind::axis;
+  bc.set = set;
+  return bc;
+}
+
 enum class NohGeometry { rz_cylindrical, cylindrical_3d, rz_spherical, spherical_3d, rz_spherical_polar };
 
 struct NohSpec {
@@ -92,7 +100,7 @@ inline NohResult run_noh(const NohSpec& spec) {
   if (spec.geometry == NohGeometry::rz_cylindrical) {
     model.run.mode = GeometryMode::axisymmetric;
     add_block(mesh, {"gas", 0, {0, 0, 0}, {1.0, 2 * dr, 0}, {spec.zones, 2, 1}});
-    model.boundaries.push_back(BoundaryCondition{BoundaryKind::axis, "gas.xmin"});
+    model.boundaries.push_back(axis_condition("gas.xmin"));
     model.boundaries.push_back(symmetry("gas.ymin", {0, 1, 0}));
     model.boundaries.push_back(symmetry("gas.ymax", {0, 1, 0}));
   } else if (spec.geometry == NohGeometry::rz_spherical) {
@@ -176,7 +184,7 @@ inline NohResult run_noh(const NohSpec& spec) {
       }
     mesh.node_sets["axis"].erase(mesh.node_sets["axis"].begin());  // the centre nodes are held below
     mesh.node_sets["equator"].erase(mesh.node_sets["equator"].begin());
-    model.boundaries.push_back(BoundaryCondition{BoundaryKind::axis, "axis"});
+    model.boundaries.push_back(axis_condition("axis"));
     model.boundaries.push_back(symmetry("equator", {0, 1, 0}));
   } else {
     // A sector of half-angle 7.5 degrees about the z axis, one cell high.

@@ -50,7 +50,10 @@ TEST(SphCase, FilledPartRunsThroughRunModel) {
   ASSERT_EQ(model.particles.count(), 400u);
   EXPECT_EQ(model.parts[0].kind, PartKind::sph);
   omp_set_num_threads(1);
-  const RunSummary summary = run_model(model, RunOptions{{}, ProgressStyle::none, 1});
+  RunOptions options;
+  options.progress = ProgressStyle::none;
+  options.threads = 1;
+  const RunSummary summary = run_model(model, options);
   EXPECT_FALSE(summary.failed) << summary.stop_reason;
   EXPECT_NEAR(summary.time, 2e-4, 1e-12);
   // A free gas block expands: the energy balance must still close.

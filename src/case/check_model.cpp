@@ -143,7 +143,7 @@ void check_axisymmetric(const Model& model) {
 }  // namespace
 
 // Particles inside FEM elements would double the material there: without a
-// join or contact (coupling issue) that is refused. Only particles inside the
+// join or contact that is refused. Only particles inside the
 // mesh's bounding box are located.
 static void check_particle_overlap(const Model& model) {
   const FemMesh& mesh = model.mesh;

@@ -234,7 +234,7 @@ void fill_sph_parts(std::vector<PendingFill>& pending, Model& model) {
   }
 }
 
-// `geostatic = { surface = ..., k0 = 0.5 | "jaky", surcharge = ... }` of a FEM part: its initial
+// `geostatic = { surface = ..., k0 = 0.5 | "jaky", surcharge = ... }` of a FEM or SPH part: its initial
 // stress from the overburden under [run] gravity (docs/case-format.md, docs/theory/gravity.md).
 GeostaticState read_part_geostatic(TomlReader& t, const Model& model, const Part& part) {
   GeostaticState geo;
@@ -282,13 +282,11 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     const std::string kind = p.choice("kind", {"fem", "sph"}, "fem");
     part.kind = kind == "sph" ? PartKind::sph : PartKind::fem;
     part.initial_velocity = p.vector("initial_velocity", dim, {0, 0, 0});
+    if (auto geo = p.table("geostatic")) part.geostatic = read_part_geostatic(*geo, model, part);
     if (part.kind == PartKind::fem) {
       if (auto h = p.table("hourglass")) part.hourglass = read_part_hourglass(*h);
-      if (auto geo = p.table("geostatic")) part.geostatic = read_part_geostatic(*geo, model, part);
     } else if (p.has("hourglass")) {
       p.fail("hourglass", "only a FEM part has hourglass control (SPH particles have no hourglass modes)");
-    } else if (p.has("geostatic")) {
-      p.fail("geostatic", "a geostatic initial state is set on FEM parts only");
     }
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);

@@ -238,8 +238,8 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "# the run; none is removed.\n";
   if (s.gravity > 0.0)
     b +=
-        "# Gravity: the FEM soil starts in its geostatic state (Jaky's K0), the SPH zone and the box settle\n"
-        "# in it by a dynamic relaxation before t = 0, the charge held unlit (docs/theory/gravity.md).\n";
+        "# Gravity: the soil, FEM and SPH, starts in its geostatic state (Jaky's K0); the box settles in it\n"
+        "# by a dynamic relaxation before t = 0, the charge held unlit (docs/theory/gravity.md).\n";
   if (s.has_rebar)
     fmt::format_to(
         out,
@@ -302,8 +302,8 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         out,
         "[[parts]]\nname = \"near_field\"\nkind = \"sph\"\nmaterial = \"soil\"\njoin = true\n"
         "exclude = [\"charge\"]\n"
-        "fill = {{ shape = \"box\", min = [0.0, {:.9g}], max = [{:.9g}, 0.0], spacing = {:.9g} }}\n\n",
-        -s.sph_bottom(), s.sph_radius, L.zone_spacing);
+        "fill = {{ shape = \"box\", min = [0.0, {:.9g}], max = [{:.9g}, 0.0], spacing = {:.9g} }}\n{}\n",
+        -s.sph_bottom(), s.sph_radius, L.zone_spacing, buried_detail::part_geostatic(s, "soil"));
     // The three-phase soil reports its unloading (water-solid) sound speed,
     // several times the speed of the compaction wave, so the linear term
     // alpha c mu of the particle viscosity at the usual alpha = 1 damps the

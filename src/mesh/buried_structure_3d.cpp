@@ -332,9 +332,10 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
     fmt::format_to(
         out,
         "[[parts]]\nname = \"near_field\"\nkind = \"sph\"\nmaterial = \"soil\"\njoin = true\n"
-        "exclude = [\"charge\"]\nfill = {{ shape = \"box\", min = {}, max = {}, spacing = {:.9g} }}\n\n",
+        "exclude = [\"charge\"]\nfill = {{ shape = \"box\", min = {}, max = {}, spacing = {:.9g} }}\n{}\n",
         fmt_point(zone.region.min[0], zone.region.min[1], zone.region.min[2]),
-        fmt_point(zone.region.max[0], zone.region.max[1], zone.region.max[2]), zone.spacing);
+        fmt_point(zone.region.max[0], zone.region.max[1], zone.region.max[2]), zone.spacing,
+        buried_detail::part_geostatic(s, "soil"));
     // The same particle viscosity as r-z (docs/buried-structure.md, "SPH viscosity").
     b += "[sph]\nviscosity_alpha = 0.2  # linear term (see docs/buried-structure.md, \"SPH viscosity\")\n"
          "viscosity_beta = 2.0   # quadratic term\n\n";

@@ -109,7 +109,7 @@ struct FemMesh {
   }
 };
 
-// SPH particles (filled by the SPH issue's generators).
+// SPH particles (filled by the case reader's particle fills, mesh/particle_fill.hpp).
 struct ParticleSet {
   std::vector<double> coordinates;        // n * dimension, m
   std::vector<double> volume;             // m^3 (axisymmetric: ring volume 2 pi r A)
@@ -160,7 +160,7 @@ enum class BoundaryKind {
   symmetry,     // zero normal velocity on a plane
   axis,         // axis of revolution r = 0 (axisymmetric): zero radial velocity
   pressure,     // pressure load on a face set (compression positive, acts against the outward normal)
-  transmitting  // non-reflecting viscous boundary on a face set (coupling issue)
+  transmitting  // non-reflecting viscous boundary on a face set (boundary/transmitting_boundary.hpp)
 };
 
 struct BoundaryCondition {
@@ -195,7 +195,7 @@ struct GaugeGroup {
   SourceLocation where;
 };
 
-// A joined SPH-FEM interface (coupling issue, Wang et al. 2005 section 3.3):
+// A joined SPH-FEM interface (Wang et al. 2005 section 3.3):
 // the particles of `sph_part` and the elements of `fem_parts` meet along the
 // boundary of the hole the SPH zone was cut from (coupling/joined_zone.hpp)
 // and interact as one continuum (coupling/sph_fem_join.hpp).
@@ -205,7 +205,7 @@ struct Join {
   SourceLocation where;
 };
 
-// A sliding interface (coupling issue): the particles of `sph_part` against the
+// A sliding interface: the particles of `sph_part` against the
 // FEM faces of `face_set`, penalty contact with Coulomb friction
 // (coupling/sliding_contact.hpp).
 struct Contact {
@@ -228,8 +228,8 @@ struct Model {
   ParticleSet particles;
   sph::SphOptions sph;  // numerical SPH settings (the case's [sph] block)
   std::vector<BoundaryCondition> boundaries;
-  std::vector<Join> joins;        // SPH-FEM joins (coupling issue)
-  std::vector<Contact> contacts;  // SPH-FEM sliding interfaces (coupling issue)
+  std::vector<Join> joins;        // SPH-FEM joins (coupling/)
+  std::vector<Contact> contacts;  // SPH-FEM sliding interfaces (coupling/)
   std::vector<GaugeGroup> gauges;
   std::vector<DetonationPoint> detonations;
   std::vector<SourceLocation> detonation_where;  // same order as detonations

@@ -33,7 +33,7 @@ struct FieldSnapshot {
   std::span<const double> element_temperature;     // K; 0 where the material carries no temperature
   std::span<const int> element_material;           // index into Model::materials
 
-  // SPH particles (empty until the SPH issue)
+  // SPH particles (empty without an SPH part)
   std::span<const double> particle_position;
   std::span<const double> particle_displacement;
   std::span<const double> particle_velocity;

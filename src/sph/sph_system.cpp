@@ -11,6 +11,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "model/geostatic_stress.hpp"
+
 namespace camouflet::sph {
 
 template <int D>
@@ -113,6 +115,7 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
       for (int d = 0; d < D; ++d) where[k][d] = p_.position[batch_particles_[m][k]][d];
     materials_[m]->eos().place(batches_[m], where, model.detonations);
   }
+  set_geostatic_state(model);  // before the masses: they follow from the density that carries the overburden
 
   double h_min = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
@@ -130,6 +133,37 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   skin_ = n ? options_.skin_factor * h_min : 0.0;
   active_skin_ = std::min(skin_, n ? 0.1 * h_min : 0.0);
   gather_material_state();
+}
+
+// SPH soil parts with `geostatic = {...}` start in their overburden state at each particle
+// (model/geostatic_stress.hpp, as the FEM parts do at their element centres); the particle keeps
+// its fill volume, so its mass carries the compressed weight.
+template <int D>
+void SphSystem<D>::set_geostatic_state(const Model& model) {
+  std::vector<GeostaticRequest> request;
+  for (const MaterialPoints& pts : batches_) request.emplace_back(pts.size());
+  bool any = false;
+  for (std::size_t part_index = 0; part_index < model.parts.size(); ++part_index) {
+    const Part& part = model.parts[part_index];
+    if (!part.geostatic || part.kind != PartKind::sph) continue;
+    std::vector<GeostaticPoint> points;
+    std::vector<std::size_t> particle;
+    for (std::size_t i = 0; i < p_.real; ++i) {
+      if (static_cast<std::size_t>(p_.part[i]) != part_index) continue;
+      GeostaticPoint point{p_.slot[i], {}};
+      for (int d = 0; d < D; ++d) point.centre[static_cast<std::size_t>(d)] = p_.position[i][d];
+      points.push_back(point);
+      particle.push_back(i);
+    }
+    if (points.empty()) continue;
+    any = true;
+    ask_geostatic_stress(
+        model, part_index, points, [&](std::size_t k) { return fmt::format("particle {}", particle[k] + 1); },
+        request[static_cast<std::size_t>(part.material)]);
+  }
+  if (!any) return;
+  for (std::size_t m = 0; m < batches_.size(); ++m)
+    if (!batch_particles_[m].empty()) commit_geostatic_state(model, m, batches_[m], request[m]);
 }
 
 template <int D>

@@ -214,6 +214,7 @@ class SphSystem {
   // r-z: books as heat the work of the images' signed ring weights (refresh_ghosts), which
   // the conservative pairing with |r| would not do; after the kick, with its mean velocities.
   void book_axis_image_work(double dt);
+  void set_geostatic_state(const Model& model);  // SPH soil parts under gravity, before the masses
   void gather_material_state();
   // The momentum sum (compute_accelerations) over the current lists at x(n),
   // storing per list entry the pair terms kick() books as heat; with

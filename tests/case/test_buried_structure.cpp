@@ -143,7 +143,7 @@ TEST(BuriedStructure, BadInputNamesTheKey) {
 }
 
 // Gravity: the case gets [run] gravity, a dynamic relaxation of the given period and Jaky's
-// geostatic state on every FEM soil part (none on the box, the charge or the SPH zone).
+// geostatic state on every soil part, FEM and SPH (none on the box or the charge).
 TEST(BuriedStructure, GravityWritesGeostaticSoilAndRelaxation) {
   BuriedStructureSpec spec = test::with_sph_zone_and_rebar(paper_coarse(), 1.5, 0.025, 0.005);
   spec.gravity = 9.81;
@@ -155,9 +155,12 @@ TEST(BuriedStructure, GravityWritesGeostaticSoilAndRelaxation) {
   std::size_t soil = 0;
   for (const Part& part : model.parts) {
     const std::string& material = model.materials[static_cast<std::size_t>(part.material)].name;
-    const bool fem_soil = part.kind == PartKind::fem && material == "soil";
-    EXPECT_EQ(part.geostatic.has_value(), fem_soil) << part.name;
-    if (fem_soil) {
+    const bool soil_part = material == "soil";
+    EXPECT_EQ(part.geostatic.has_value(), soil_part) << part.name;
+    if (part.kind == PartKind::sph) {
+      EXPECT_EQ(soil_part, part.name == "near_field") << part.name;
+    }
+    if (soil_part) {
       ++soil;
       EXPECT_EQ(part.geostatic->surface, 0.0);
       EXPECT_FALSE(part.geostatic->k0.has_value()) << "Jaky's K0";

@@ -206,7 +206,6 @@ void SphSystem<D>::force_pass(bool write_rates) {
   pair_dissipation_.resize(upper_index_[n]);
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
-  const std::size_t n_blocks = blocks.count();
   force_sums_.prepare(blocks, n);
   const bool tensile = options_.artificial_stress;
   const bool volume_form = options_.volume_form;
@@ -225,88 +224,79 @@ void SphSystem<D>::force_pass(bool write_rates) {
   {
     fill_point_factors();
     // Blocks handed out one at a time (prepare_row_blocks()); rows are added up after the barrier.
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t k = 0; k < n_blocks; ++k) {
-      ForceSum* const own = force_sums_.zeroed(blocks, k);
-      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
-        if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
-          force_row_lanes(i, own);
+    for_each_row_block(blocks, force_sums_, [&](std::size_t i, ForceSum* own) {
+      if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
+        force_row_lanes(i, own);
+        return;
+      }
+      Vec<D> acc{};
+      double mu_max = 0.0;
+      int count = 0;
+      const std::size_t base = upper_index_[i];
+      const auto list = active_upper_neighbours(i);
+      for (std::size_t e = 0; e < list.size(); ++e) {
+        const std::uint32_t j = list[e];
+        const Vec<D> dx = x[i] - x[j];
+        const double r2 = dot(dx, dx);
+        const double hij = pair_smoothing_length(h[i], h[j]);
+        if (r2 >= support_factor * support_factor * hij * hij) {
+          pair_dissipation_[base + e] = Vec<D>{};
           continue;
         }
-        Vec<D> acc{};
-        double mu_max = 0.0;
-        int count = 0;
-        const std::size_t base = upper_index_[i];
-        const auto list = active_upper_neighbours(i);
-        for (std::size_t e = 0; e < list.size(); ++e) {
-          const std::uint32_t j = list[e];
-          const Vec<D> dx = x[i] - x[j];
-          const double r2 = dot(dx, dx);
-          const double hij = pair_smoothing_length(h[i], h[j]);
-          if (r2 >= support_factor * support_factor * hij * hij) {
-            pair_dissipation_[base + e] = Vec<D>{};
-            continue;
-          }
-          const double inv_h = 1.0 / hij;
-          const double r = std::sqrt(r2);
-          const auto w = kernel_.pair_terms(r, inv_h);
-          const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
-          const Vec<D> dv = v[i] - v[j];
-          const double vr = dot(dv, dx);
-          Vec<D> dissipation{};
-          double mu = 0.0;
-          if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
-            mu = hij * vr / (r2 + 0.01 * hij * hij);
-            const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-            const PairViscosity q =
-                switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
-            const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
-            mu_max = std::max(mu_max, -mu);
-            dissipation = grad * pi_ij;
-          }
-          if (tensile && (has_tensile_[i] | has_tensile_[j])) {
-            const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
-            dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
-          }
-          pair_dissipation_[base + e] = dissipation;
-          // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j /
-          // eta_j).
-          const SymTensor pair = volume_form
-                                     ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
-                                     : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
-          const Vec<D> force = apply<D>(pair, grad) - dissipation;
-          acc += force * m[j];
-          ++count;
-          if (j < n) {
-            ForceSum& other = own[j];
-            other.acceleration -= force * m[i];
-            other.compression_rate = std::max(other.compression_rate, -mu);
-            ++other.count;
-          }
+        const double inv_h = 1.0 / hij;
+        const double r = std::sqrt(r2);
+        const auto w = kernel_.pair_terms(r, inv_h);
+        const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
+        const Vec<D> dv = v[i] - v[j];
+        const double vr = dot(dv, dx);
+        Vec<D> dissipation{};
+        double mu = 0.0;
+        if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
+          mu = hij * vr / (r2 + 0.01 * hij * hij);
+          const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
+          const PairViscosity q =
+              switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
+          const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
+          mu_max = std::max(mu_max, -mu);
+          dissipation = grad * pi_ij;
         }
-        ForceSum& mine = own[i];
-        mine.acceleration += acc;
-        mine.compression_rate = std::max(mine.compression_rate, mu_max);
-        mine.count += count;
+        if (tensile && (has_tensile_[i] | has_tensile_[j])) {
+          const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
+          dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
+        }
+        pair_dissipation_[base + e] = dissipation;
+        // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j /
+        // eta_j).
+        const SymTensor pair = volume_form ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
+                                           : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
+        const Vec<D> force = apply<D>(pair, grad) - dissipation;
+        acc += force * m[j];
+        ++count;
+        if (j < n) {
+          ForceSum& other = own[j];
+          other.acceleration -= force * m[i];
+          other.compression_rate = std::max(other.compression_rate, -mu);
+          ++other.count;
+        }
       }
-    }
+      ForceSum& mine = own[i];
+      mine.acceleration += acc;
+      mine.compression_rate = std::max(mine.compression_rate, mu_max);
+      mine.count += count;
+    });
     if (write_rates) {
       auto add = [](ForceSum& total, const ForceSum& part) {
         total.acceleration += part.acceleration;
         total.compression_rate = std::max(total.compression_rate, part.compression_rate);
         total.count += part.count;
       };
-#pragma omp for schedule(dynamic, 1)
-      for (std::size_t k = 0; k < n_blocks; ++k) {
-        for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
-          ForceSum total = force_sums_.total(blocks, k, i, add);
-          if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
-            total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
-          p_.acceleration[i] = total.acceleration;
-          p_.compression_rate[i] = total.compression_rate;
-          p_.neighbour_count[i] = total.count;
-        }
-      }
+      for_each_row_total(blocks, force_sums_, add, [&](std::size_t i, ForceSum total) {
+        if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
+          total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
+        p_.acceleration[i] = total.acceleration;
+        p_.compression_rate[i] = total.compression_rate;
+        p_.neighbour_count[i] = total.count;
+      });
     }
   }
   pair_dissipation_current_ = true;

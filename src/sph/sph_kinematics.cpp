@@ -105,7 +105,6 @@ void SphSystem<D>::update_state(double dt, double time) {
   // (volume form V_j for i and V_i for j; density form m_j / eta_i and m_i / eta_j).
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
-  const std::size_t n_blocks = blocks.count();
   kinematic_sums_.prepare(blocks, n);
   std::size_t limited = 0;
   // One parallel region from the point factors to the material batches (docs/performance.md,
@@ -115,25 +114,20 @@ void SphSystem<D>::update_state(double dt, double time) {
   {
     fill_point_factors();
     // Blocks handed out one at a time, as in force_pass().
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t k = 0; k < n_blocks; ++k) {
-      KinematicSum* const own = kinematic_sums_.zeroed(blocks, k);
-      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
-        if (corrected)
-          corrected_kinematics_row(i, own);
-        else
-          kinematics_row_lanes(i, own);  // SIMD lanes (pair_lanes.cpp), the same sums
-      }
-    }
+    for_each_row_block(blocks, kinematic_sums_, [&](std::size_t i, KinematicSum* own) {
+      if (corrected)
+        corrected_kinematics_row(i, own);
+      else
+        kinematics_row_lanes(i, own);  // SIMD lanes (pair_lanes.cpp), the same sums
+    });
     auto add = [](KinematicSum& total, const KinematicSum& part) {
       total.rate += part.rate;
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
     };
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t k = 0; k < n_blocks; ++k)
-      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i)
-        if (!end_step_of_row(i, kinematic_sums_.total(blocks, k, i, add), dt)) ++limited;
+    for_each_row_total(blocks, kinematic_sums_, add, [&](std::size_t i, const KinematicSum& total) {
+      if (!end_step_of_row(i, total, dt)) ++limited;
+    });
   }
   refresh_ghosts();
   volume_limited_ = limited;

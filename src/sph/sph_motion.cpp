@@ -61,7 +61,6 @@ void SphSystem<D>::kick(double dt) {
   const auto& d = pair_dissipation_;
   // The blocks of the force pass that stored d (the same extraction; thread_sums.hpp).
   const RowBlocks& blocks = row_blocks_;
-  const std::size_t n_blocks = blocks.count();
   heat_sums_.prepare(blocks, n);
   const HeatPoint* const hp = heat_points_.data();
   // One parallel region: the kick with the particles' heating records (v(n-1/2) + v(n+1/2) and m
@@ -74,29 +73,23 @@ void SphSystem<D>::kick(double dt) {
 #pragma omp single
       refresh_other_points();
     }
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t k = 0; k < n_blocks; ++k) {
-      double* const own = heat_sums_.zeroed(blocks, k);
-      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) {
-        const Vec<D> sum_i = hp[i].velocity_sum;
-        const double mi = hp[i].mass;
-        double heat = 0.0;
-        const std::size_t base = upper_index_[i];
-        const auto list = active_upper_neighbours(i);
-        for (std::size_t e = 0; e < list.size(); ++e) {
-          const std::uint32_t j = list[e];
-          const double work = dot(d[base + e], sum_i - hp[j].velocity_sum);  // 2 d_ij . vbar_ij
-          heat += work * hp[j].mass;
-          if (j < n) own[j] += work * mi;
-        }
-        own[i] += heat;
+    for_each_row_block(blocks, heat_sums_, [&](std::size_t i, double* own) {
+      const Vec<D> sum_i = hp[i].velocity_sum;
+      const double mi = hp[i].mass;
+      double heat = 0.0;
+      const std::size_t base = upper_index_[i];
+      const auto list = active_upper_neighbours(i);
+      for (std::size_t e = 0; e < list.size(); ++e) {
+        const std::uint32_t j = list[e];
+        const double work = dot(d[base + e], sum_i - hp[j].velocity_sum);  // 2 d_ij . vbar_ij
+        heat += work * hp[j].mass;
+        if (j < n) own[j] += work * mi;
       }
-    }
+      own[i] += heat;
+    });
     auto add = [](double& total, double part) { total += part; };
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t k = 0; k < n_blocks; ++k)
-      for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i)
-        p_.heating[i] += 0.25 * heat_sums_.total(blocks, k, i, add) * dt;
+    for_each_row_total(blocks, heat_sums_, add,
+                       [&](std::size_t i, double total) { p_.heating[i] += 0.25 * total * dt; });
   }
   book_axis_image_work(dt);
   if (options_.conductivity > 0.0) conduct_heat(dt);

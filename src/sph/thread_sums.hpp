@@ -135,4 +135,26 @@ class BlockSums {
   std::unique_ptr<T, Release> data_;
 };
 
+// Inside a parallel region: every block's rows, row(i, own) into the block's copy of the sums
+// (its window zeroed first), blocks handed out one at a time.
+template <class T, class Row>
+void for_each_row_block(const RowBlocks& blocks, BlockSums<T>& sums, Row row) {
+  const std::size_t n_blocks = blocks.count();
+#pragma omp for schedule(dynamic, 1)
+  for (std::size_t k = 0; k < n_blocks; ++k) {
+    T* const own = sums.zeroed(blocks, k);
+    for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) row(i, own);
+  }
+}
+
+// Inside a parallel region, after for_each_row_block's implied barrier: each row's total over
+// the copies that hold it, add(total, part) in block order, handed to done(i, total).
+template <class T, class Add, class Done>
+void for_each_row_total(const RowBlocks& blocks, const BlockSums<T>& sums, Add add, Done done) {
+  const std::size_t n_blocks = blocks.count();
+#pragma omp for schedule(dynamic, 1)
+  for (std::size_t k = 0; k < n_blocks; ++k)
+    for (std::size_t i = blocks.begin(k); i < blocks.end(k); ++i) done(i, sums.total(blocks, k, i, add));
+}
+
 }  // namespace camouflet::sph

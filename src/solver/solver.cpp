@@ -193,17 +193,28 @@ void Solver<D>::step() {
     // The state at t_n: a NaN is named before forces spread it. FEM-only
     // models skip the nodes that the previous step's node pass checked.
     if (particles_ || !bars_.empty() || nodes_checked_cycle_ != cycle_) check_nodes_and_particles();
-    add_forces();            // loads and element forces at t_n (SPH particle forces join here)
-    add_bar_forces();        // embedded reinforcement bars onto their host nodes
-    advance_velocities();    // a = F / m, v(n+1/2) by the central difference
-    constrain_velocities();  // fixed, prescribed, symmetry, axis at t_(n+1/2)
-    // Energies at t_n, then x(n+1) = x(n) + v(n+1/2) dt, each node checked
-    // finite and inside the domain box: one pass over the nodes.
+    // Forces at t_n.
+    add_element_forces();          // FEM: face loads, element stresses and hourglass control (fem/)
+    add_particle_forces();         // SPH: the particle sums, accelerations (sph/)
+    add_coupling_forces();         // the join's reactions and the sliding contact (coupling/)
+    add_gravity();                 // m g on nodes and particles (gravity.cpp)
+    add_static_boundary_forces();  // the transmitting boundaries' static hold (gravity.cpp)
+    add_bar_forces();              // embedded reinforcement bars onto their host nodes
+    // Velocities at t_(n+1/2).
+    advance_velocities();    // FEM: a = F / m, v(n+1/2) by the central difference
+    kick_particles();        // SPH: v(n+1/2), the pair heating
+    constrain_velocities();  // dashpots, fixed, prescribed, symmetry, axis; the join settles
+    // Energies at t_n and positions at t_(n+1); the clock moves on.
+    drift_particles();       // SPH: centred kinetic energy, x(n+1)
+    // FEM: x(n+1) = x(n) + v(n+1/2) dt, each node checked finite and inside the domain box in the
+    // same pass; the energy balance; time, cycle and dt.
     account_energy_and_advance_positions();
     check_particles();       // the particles' half of check_nodes_and_particles (solver_checks.cpp)
     check_axis_crossings();  // r-z: a node across the axis is reported (a warning)
-    element_kinematics();    // V, rho at t_(n+1); D, W, q at mid-step (SPH kinematics beside it)
-    update_materials();      // EOS + strength + damage, one call per material batch
+    // Kinematics and material state at t_(n+1).
+    particle_kinematics();   // SPH: eta, rho, h, D, W and their material update (sph/)
+    element_kinematics();    // FEM: V, rho at t_(n+1); D, W, q at mid-step
+    update_materials();      // FEM: EOS + strength + damage, one call per material batch
     update_bars();           // embedded bars: uniaxial-stress material update
     erode_elements();        // elements past their material's erosion threshold (the join follows)
     gather_element_state();  // sigma = s - p I, wave speeds, internal energy, dt vote
@@ -221,7 +232,7 @@ void Solver<D>::fail(NumericalError error) const {
 }
 
 template <int D>
-void Solver<D>::add_forces() {
+void Solver<D>::add_element_forces() {
   // The node passes of the previous step zeroed both arrays as they read
   // them for the last time (node_forces_zeroed_); otherwise zero them here.
   if (!node_forces_zeroed_) std::fill(force_.begin(), force_.end(), 0.0);
@@ -240,13 +251,6 @@ void Solver<D>::add_forces() {
   node_forces_zeroed_ = false;
   hourglass_stored_ = elements_.add_internal_forces(position_.data(), velocity_.data(), force_.data(),
                                                     f_hourglass, hourglass_, dt_);
-  if (particles_) particles_->compute_accelerations();          // SPH sums at t_n
-  if (join_) join_->add_reactions(*particles_, force_.data());  // reactions on the joined nodes
-  if (particles_ && !contact_.empty())
-    contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(),
-                                    0.5 * (dt_ + dt_next_));
-  add_gravity();  // after the particle sums, which set the particles' accelerations
-  add_static_boundary_forces();
 }
 
 template <int D>
@@ -261,13 +265,12 @@ void Solver<D>::advance_velocities() {
     for (int i = 0; i < D; ++i) {
       const std::size_t k = static_cast<std::size_t>(n * D + i);
       const double a = force_[k] * inv_m;
-      force_[k] = 0.0;  // its last use: zeroed for the next add_forces
+      force_[k] = 0.0;  // its last use: zeroed for the next add_element_forces
       acceleration_[k] = a;
       velocity_old_[k] = velocity_[k];
       velocity_[k] += a * dt_mean;
     }
   }
-  if (particles_) particles_->kick(dt_mean);
 }
 
 template <int D>
@@ -315,8 +318,6 @@ void Solver<D>::account_energy_and_advance_positions() {
   const bool hourglass = !hourglass_force_.empty();
   const double dt_minus = dt_, dt_mean = 0.5 * (dt_ + dt_next_);
   const double dt = dt_next_;
-  split_.sph_kinetic = particles_ ? particles_->centred_kinetic_energy() : 0.0;
-  if (particles_) particles_->drift(dt);
   double kinetic = 0.0, hourglass_power = 0.0;
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
 #pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) reduction(min : bad) if (nn > parallel_threshold_nodes)
@@ -329,7 +330,7 @@ void Solver<D>::account_energy_and_advance_positions() {
       vv += v_n * v_n - 0.25 * a * a * dt_minus * dt_minus;
       if (hourglass) {
         fv += 0.5 * (hourglass_force_[k] + hourglass_force_previous_[k]) * velocity_old_[k];
-        hourglass_force_previous_[k] = 0.0;  // its last use: the next add_forces fills it
+        hourglass_force_previous_[k] = 0.0;  // its last use: the next add_element_forces fills it
       }
     }
     kinetic += 0.5 * node_mass_[static_cast<std::size_t>(n)] * vv;
@@ -365,8 +366,6 @@ void Solver<D>::account_energy_and_advance_positions() {
 
 template <int D>
 void Solver<D>::element_kinematics() {
-  // Particles: density, velocity gradient and their own material batches (the same Material::update).
-  if (particles_) particles_->update_state(dt_, time_);
   const KinematicsResult r =
       elements_.kinematics(position_.data(), velocity_.data(), velocity_old_.data(), dt_, viscosity_, batches_);
   energy_.viscous += r.viscous_work;

@@ -1,12 +1,12 @@
 #pragma once
 // The explicit Lagrangian cycle (architecture.md; Wang et al. 2005, Fig. 4)
-// over FEM elements, driven one step at a time. run_model() drives it to the
-// end time with output; tests drive it cycle by cycle.
+// over FEM elements and SPH particles, driven one step at a time. run_model()
+// drives it to the end time with output; tests drive it cycle by cycle.
 //
-// SPH seam: particles join this cycle later. Their forces add to the nodal /
-// particle force stage (add_forces), their kinematics (density by continuity,
-// velocity gradient by kernel sums) slot in beside element_kinematics, and
-// their material points are further batches updated by update_materials.
+// step() lists its stages; each names the method it serves. The solver owns
+// the FEM node arrays; the SPH package (sph/sph_system.hpp) owns its particles
+// and is called at its own stages (forces, kick, drift, kinematics with its
+// material update); the join and the contact (coupling/) act between them.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -116,16 +116,21 @@ class Solver {
   std::size_t eroded_count() const { return eroded_count_; }
 
  private:
-  // Stages of step(), in order.
-  void add_forces();
+  // Stages of step(), in order (the FEM, SPH and coupling parts of each stage by name).
+  void add_element_forces();
+  void add_particle_forces();
+  void add_coupling_forces();
   void add_gravity();  // the body force m g and its work (solver/gravity.cpp)
   void add_static_boundary_forces();  // the transmitting boundaries' static load and its work (gravity.cpp)
   // Their static load at t = 0: under gravity, or after a relaxation (`relaxed`) (gravity.cpp).
   void hold_transmitting_boundaries(bool relaxed = false);
   void set_geostatic_state();  // initial stress, density and compaction of geostatic parts (geostatic_state.cpp)
   void advance_velocities();
+  void kick_particles();
   void constrain_velocities();
+  void drift_particles();
   void account_energy_and_advance_positions();
+  void particle_kinematics();
   void element_kinematics();
   void update_materials();
   void gather_element_state();
@@ -188,7 +193,7 @@ class Solver {
   // nodes while this equals cycle_: nothing writes them in between.
   std::int64_t nodes_checked_cycle_ = -1;
   // force_ and hourglass_force_previous_ hold zeros: the node passes zero them
-  // at their last read in a step, so add_forces need not fill them again
+  // at their last read in a step, so add_element_forces need not fill them again
   // (false after a restore: a checkpoint holds the forces of its last step).
   bool node_forces_zeroed_ = false;
   bool relaxing_ = false;  // in relax(): transmitting boundaries hold their nodes still

@@ -12,7 +12,7 @@ template <int D>
 void Solver<D>::visit_state(StateVisitor& v) {
   StateScope scope(v, "solver");
   nodes_checked_cycle_ = -1;    // a restored state is checked again by the next step
-  node_forces_zeroed_ = false;  // and its force arrays zeroed by add_forces
+  node_forces_zeroed_ = false;  // and its force arrays zeroed by add_element_forces
   visit(v, "time", time_);
   visit(v, "cycle", cycle_);
   visit(v, "dt", dt_);

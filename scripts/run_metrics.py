@@ -369,8 +369,9 @@ def crater(outdir, gen):
     t = 0) minus its current top. The crater is the run of bins from the axis whose depression exceeds
     dz / 2 (empty bins skipped, one shallow bin between deep ones tolerated): its outer edge is the
     apparent radius, its largest depression the apparent depth. dz is the spacing of the two top
-    layers of points near the axis. No gravity, no fallback: slow material inside the bowl counts as
-    ground. In 3-D r is the distance from the charge's vertical axis and each bin a ring: its top is
+    layers of points near the axis (layers closer than d / 1000 are one). Slow material inside the
+    bowl counts as ground: without gravity nothing falls back; with it, what has landed below the
+    original surface is the fallback a survey of the apparent crater includes. In 3-D r is the distance from the charge's vertical axis and each bin a ring: its top is
     the ring's highest ground, so the radius is where the shallowest azimuth leaves the bowl."""
     box = _box(gen)
     d = gen.get("burst_depth_m")
@@ -405,10 +406,15 @@ def crater(outdir, gen):
         loose.append(np.full(len(idx), part != 0))
     cur, ref0, vz, loose = (np.concatenate(a) for a in (cur, ref0, vz, loose))
     near = ref0[ref0[:, 0] < max(d, 1e-9)]
-    levels = np.unique(np.round(near[:, 1], 6))[::-1]  # to the micrometre: x - u carries round-off
+    # Layers closer than d / 1000 are one: x - u carries round-off, and after a dynamic relaxation
+    # the reference is the relaxed state, whose layers have settled by microns, unevenly.
+    levels = []
+    for z in np.unique(near[:, 1])[::-1]:
+        if not levels or levels[-1] - z > 1e-3 * max(d, 1e-9):
+            levels.append(float(z))
     if len(levels) < 2:
         return None
-    dz = float(levels[0] - levels[1])
+    dz = levels[0] - levels[1]
     moved = np.hypot(*(cur - ref0).T)
     ground = ~(loose & (moved > dz) & ((cur[:, 1] > 0.0) | (vz > EJECTA_SPEED)))
     nbins = int(math.ceil(r1 / dz))

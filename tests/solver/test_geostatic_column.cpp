@@ -10,44 +10,22 @@
 
 #include "common/fem_models.hpp"
 #include "common/verification.hpp"
-#include "materials/registry.hpp"
+#include "solver/geostatic_soils.hpp"
 #include "solver/solver.hpp"
 
 using namespace camouflet;
 
 namespace {
 
-constexpr double g = 9.81;       // m/s^2
-constexpr double depth = 10.0;   // m
+constexpr double g = 9.81;         // m/s^2
+constexpr double depth = 10.0;     // m
 constexpr double end_time = 0.05;  // s
 
 enum class Sides { rollers, transmitting };
 
-struct Soil {
-  std::shared_ptr<const Material> material;
-  double density = 0.0;            // kg/m^3, reference
-  std::optional<double> k0;        // none: Jaky
-  double expected_k0 = 0.0;
-};
-
-Soil elastic_soil() {
-  test::ElasticConstants c;
-  c.density = 1800.0;
-  c.bulk_modulus = 1.0e8;
-  c.shear_modulus = 6.0e7;
-  return {test::elastic_material(c, "soil"), c.density, 0.5, 0.5};
-}
-
-// The seed paper's sandy clay: three-phase soil EOS, Drucker-Prager strength (alpha = 0.25:
-// phi = 32.3 degrees, Jaky's K0 = 0.466).
-Soil sandy_clay() {
-  Soil s;
-  s.material = make_material("soil", "sandy_clay_wang2005", {}, Parameters{}, Parameters{}, Parameters{});
-  s.density = s.material->reference_density();
-  const double a = std::sqrt(3.0) * 0.25;
-  s.expected_k0 = 1.0 - 3.0 * a / (2.0 + a);
-  return s;
-}
+using Soil = test::GeostaticSoil;
+using test::elastic_soil;
+using test::sandy_clay;
 
 Model column(GeometryMode mode, const Soil& soil, Sides sides, bool geostatic) {
   const int dim = dimension_of(mode);
@@ -101,8 +79,8 @@ Model column(GeometryMode mode, const Soil& soil, Sides sides, bool geostatic) {
 }
 
 struct ColumnResult {
-  double peak_speed = 0.0;       // m/s, over all nodes and cycles
-  double vertical_error = 0.0;   // largest |sigma_v - sigma_v,ref| / |sigma_v,ref| at 50 ms
+  double peak_speed = 0.0;        // m/s, over all nodes and cycles
+  double vertical_error = 0.0;    // largest |sigma_v - sigma_v,ref| / |sigma_v,ref| at 50 ms
   double horizontal_error = 0.0;  // the same for both horizontal stresses against K0 sigma_v,ref
   double energy_error = 0.0;
 };
@@ -134,8 +112,9 @@ ColumnResult run_column(const Model& model, double density, double k0) {
     const double v = D == 3 ? s.zz : s.yy;
     const double h1 = s.xx, h2 = D == 3 ? s.yy : s.zz;  // 2-D: out of plane or hoop
     r.vertical_error = std::max(r.vertical_error, std::abs(v - sigma_v) / std::abs(sigma_v));
-    r.horizontal_error = std::max(
-        r.horizontal_error, std::max(std::abs(h1 - k0 * sigma_v), std::abs(h2 - k0 * sigma_v)) / std::abs(k0 * sigma_v));
+    r.horizontal_error =
+        std::max(r.horizontal_error,
+                 std::max(std::abs(h1 - k0 * sigma_v), std::abs(h2 - k0 * sigma_v)) / std::abs(k0 * sigma_v));
   }
   r.energy_error = solver.energy().relative_error;
   return r;
@@ -144,12 +123,12 @@ ColumnResult run_column(const Model& model, double density, double k0) {
 template <int D>
 void check_at_rest(GeometryMode mode, const Soil& soil, Sides sides, const std::string& label) {
   const ColumnResult r = run_column<D>(column(mode, soil, sides, true), soil.density, soil.expected_k0);
-  test::verify({label + ": peak velocity over 50 ms", "at rest (below 1e-3 m/s)", 0.0, r.peak_speed, 1e-3, false,
-                "m/s"});
+  test::verify({label + ": peak velocity over 50 ms", "at rest (below 1e-3 m/s)", 0.0, r.peak_speed, 1e-3,
+                false, "m/s"});
   test::verify({label + ": vertical stress at 50 ms, largest relative error", "rho0 g d (analytic)", 0.0,
                 r.vertical_error, 0.01, false, "relative"});
-  test::verify({label + ": horizontal stresses at 50 ms, largest relative error", "K0 rho0 g d (analytic)", 0.0,
-                r.horizontal_error, 0.01, false, "relative"});
+  test::verify({label + ": horizontal stresses at 50 ms, largest relative error", "K0 rho0 g d (analytic)",
+                0.0, r.horizontal_error, 0.01, false, "relative"});
 }
 
 }  // namespace
@@ -180,13 +159,15 @@ TEST(Geostatic, ElasticColumn3dTransmittingAtRest) {
 }
 
 TEST(Geostatic, SandyClayJakyPlaneStrainAtRest) {
-  check_at_rest<2>(GeometryMode::plane_strain, sandy_clay(), Sides::rollers,
-                   "Geostatic sandy clay (three-phase soil, Drucker-Prager) 10 m, Jaky K0, plane strain, rollers");
+  check_at_rest<2>(
+      GeometryMode::plane_strain, sandy_clay(), Sides::rollers,
+      "Geostatic sandy clay (three-phase soil, Drucker-Prager) 10 m, Jaky K0, plane strain, rollers");
 }
 
 TEST(Geostatic, SandyClayJakyAxisymmetricTransmittingAtRest) {
-  check_at_rest<2>(GeometryMode::axisymmetric, sandy_clay(), Sides::transmitting,
-                   "Geostatic sandy clay (three-phase soil, Drucker-Prager) 10 m, Jaky K0, r-z, transmitting");
+  check_at_rest<2>(
+      GeometryMode::axisymmetric, sandy_clay(), Sides::transmitting,
+      "Geostatic sandy clay (three-phase soil, Drucker-Prager) 10 m, Jaky K0, r-z, transmitting");
 }
 
 TEST(Geostatic, ColumnWithoutInitialStateMoves) {

@@ -16,7 +16,7 @@
 #include "common/fem_models.hpp"
 #include "common/verification.hpp"
 #include "coupling/joined_zone.hpp"
-#include "materials/registry.hpp"
+#include "solver/geostatic_soils.hpp"
 #include "solver/solver.hpp"
 
 using namespace camouflet;
@@ -31,30 +31,9 @@ constexpr double cell = 0.25;       // m, FEM element
 constexpr double spacing = 0.125;   // m, particles
 constexpr double end_time = 0.05;   // s
 
-struct Soil {
-  std::shared_ptr<const Material> material;
-  double density = 0.0;      // kg/m^3, reference
-  std::optional<double> k0;  // none: Jaky
-  double expected_k0 = 0.0;
-};
-
-Soil elastic_soil() {
-  test::ElasticConstants c;
-  c.density = 1800.0;
-  c.bulk_modulus = 1.0e8;
-  c.shear_modulus = 6.0e7;
-  return {test::elastic_material(c, "soil"), c.density, 0.5, 0.5};
-}
-
-// Three-phase soil EOS with Drucker-Prager strength, alpha = 0.25: phi = 32.3 degrees, K0 = 0.466.
-Soil sandy_clay() {
-  Soil s;
-  s.material = make_material("soil", "sandy_clay_wang2005", {}, Parameters{}, Parameters{}, Parameters{});
-  s.density = s.material->reference_density();
-  const double a = std::sqrt(3.0) * 0.25;
-  s.expected_k0 = 1.0 - 3.0 * a / (2.0 + a);
-  return s;
-}
+using Soil = test::GeostaticSoil;
+using test::elastic_soil;
+using test::sandy_clay;
 
 // The column [0, width] x [-depth, 0], rollers on its sides (the axis in r-z) and base, the zone
 // [0, width] x [-zone_depth, 0] cut from it and joined.

@@ -158,4 +158,27 @@ void commit_geostatic_state(const Model& model, std::size_t m, MaterialPoints& p
   }
 }
 
+void set_geostatic_states(const Model& model, PartKind kind, const char* noun,
+                          std::vector<MaterialPoints>& batches,
+                          const std::function<void(std::size_t, std::vector<GeostaticPoint>&,
+                                                   std::vector<std::size_t>&)>& points_of) {
+  std::vector<GeostaticRequest> request;
+  for (const MaterialPoints& pts : batches) request.emplace_back(pts.size());
+  bool any = false;
+  for (std::size_t part_index = 0; part_index < model.parts.size(); ++part_index) {
+    const Part& part = model.parts[part_index];
+    if (!part.geostatic || part.kind != kind) continue;
+    std::vector<GeostaticPoint> points;
+    std::vector<std::size_t> ids;
+    points_of(part_index, points, ids);
+    any = true;
+    ask_geostatic_stress(
+        model, part_index, points, [&](std::size_t k) { return fmt::format("{} {}", noun, ids[k]); },
+        request[static_cast<std::size_t>(part.material)]);
+  }
+  if (!any) return;
+  // A batch without geostatic points is left as it is (commit_geostatic_state returns at once).
+  for (std::size_t m = 0; m < batches.size(); ++m) commit_geostatic_state(model, m, batches[m], request[m]);
+}
+
 }  // namespace camouflet

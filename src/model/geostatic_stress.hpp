@@ -47,4 +47,12 @@ void ask_geostatic_stress(const Model& model, std::size_t part_index,
 void commit_geostatic_state(const Model& model, std::size_t m, MaterialPoints& pts,
                             const GeostaticRequest& request);
 
+// The whole geostatic initial state of one method's points: for every part of `kind` with a
+// geostatic state, points_of(part, points, ids) lists its points and their 1-based ids (named
+// "<noun> <id>" in errors); each batch (by Model::materials index) is then committed at once.
+void set_geostatic_states(const Model& model, PartKind kind, const char* noun,
+                          std::vector<MaterialPoints>& batches,
+                          const std::function<void(std::size_t, std::vector<GeostaticPoint>&,
+                                                   std::vector<std::size_t>&)>& points_of);
+
 }  // namespace camouflet

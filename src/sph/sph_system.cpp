@@ -140,30 +140,16 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
 // its fill volume, so its mass carries the compressed weight.
 template <int D>
 void SphSystem<D>::set_geostatic_state(const Model& model) {
-  std::vector<GeostaticRequest> request;
-  for (const MaterialPoints& pts : batches_) request.emplace_back(pts.size());
-  bool any = false;
-  for (std::size_t part_index = 0; part_index < model.parts.size(); ++part_index) {
-    const Part& part = model.parts[part_index];
-    if (!part.geostatic || part.kind != PartKind::sph) continue;
-    std::vector<GeostaticPoint> points;
-    std::vector<std::size_t> particle;
-    for (std::size_t i = 0; i < p_.real; ++i) {
-      if (static_cast<std::size_t>(p_.part[i]) != part_index) continue;
-      GeostaticPoint point{p_.slot[i], {}};
-      for (int d = 0; d < D; ++d) point.centre[static_cast<std::size_t>(d)] = p_.position[i][d];
-      points.push_back(point);
-      particle.push_back(i);
-    }
-    if (points.empty()) continue;
-    any = true;
-    ask_geostatic_stress(
-        model, part_index, points, [&](std::size_t k) { return fmt::format("particle {}", particle[k] + 1); },
-        request[static_cast<std::size_t>(part.material)]);
-  }
-  if (!any) return;
-  for (std::size_t m = 0; m < batches_.size(); ++m)
-    if (!batch_particles_[m].empty()) commit_geostatic_state(model, m, batches_[m], request[m]);
+  set_geostatic_states(model, PartKind::sph, "particle", batches_,
+                       [&](std::size_t part, std::vector<GeostaticPoint>& points, std::vector<std::size_t>& ids) {
+                         for (std::size_t i = 0; i < p_.real; ++i) {
+                           if (static_cast<std::size_t>(p_.part[i]) != part) continue;
+                           GeostaticPoint point{p_.slot[i], {}};
+                           for (int d = 0; d < D; ++d) point.centre[static_cast<std::size_t>(d)] = p_.position[i][d];
+                           points.push_back(point);
+                           ids.push_back(i + 1);
+                         }
+                       });
 }
 
 template <int D>

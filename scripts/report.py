@@ -25,14 +25,13 @@ import numpy as np  # noqa: E402
 # The headline quantities have one definition, shared with `camouflet sweep`.
 from run_metrics import (F_COUPLING, G, band_ratio, crater, deflections, empirical_averages,  # noqa: E402
                          empirical_range, final_displacements, gauge_names, generator_parameters,
-                         ground_shock_peaks, in_structure_peaks, last_snapshots, radial_stress, read_csv,
-                         structure_damage, tm5_functions)
+                         ground_shock_peaks, in_structure_peaks, last_snapshots, member_average_motion,
+                         radial_stress, read_csv, structure_damage, tm5_functions)
 from damage_map import damage_map  # noqa: E402
-from structure_shock import lowpass, shock_response_spectrum  # noqa: E402
+from structure_shock import (CUTOFF_HZ, can_lowpass, filtered_acceleration, lowpass, shock_response_spectrum,  # noqa: E402
+                             uniform)
 
-# In-structure accelerations are shown raw and low-passed at this cut-off (zero-phase,
-# -3 dB here; about SAE J211's CFC 600), and their shock spectra use this damping.
-CUTOFF_HZ = 1000.0
+# The in-structure shock spectra use this damping.
 SRS_DAMPING = 0.05
 MEMBER_ORDER = ["front wall", "roof", "floor", "back wall"]
 # energy.csv's terms (solver/energy_output.hpp) in words; the shares are parts of the term above them.
@@ -44,26 +43,6 @@ ENERGY_NAMES = {"join_face": "join, via the centre-face offset", "viscous": "vis
 
 def energy_name(term):
     return ENERGY_NAMES.get(term, term)
-
-
-def uniform(t, x):
-    """(t, x) on an evenly spaced grid of the same number of samples (gauge rows
-    are written at the first cycle past each interval, not exactly on it)."""
-    tu = np.linspace(t[0], t[-1], len(t))
-    return tu, np.interp(tu, t, x)
-
-
-def filtered_acceleration(t, v):
-    """Acceleration low-passed at CUTOFF_HZ, on an even grid, from the velocity
-    gauge v(t); None if sampled too coarsely. The acceleration gauge is the
-    nodal acceleration of one cycle every few dozen, which aliases the
-    cycle-to-cycle noise: on the coarse case its integral drifts by 2-3 m/s from
-    the velocity. The velocity's difference quotient is the mean acceleration
-    over each interval and integrates back to the velocity."""
-    tu, vu = uniform(t, v)
-    if len(tu) < 16 or CUTOFF_HZ >= 0.5 * (len(tu) - 1) / (tu[-1] - tu[0]):
-        return None
-    return tu, lowpass(tu, np.gradient(vu, tu), CUTOFF_HZ)
 
 
 def rebar_gauges(case_path):
@@ -198,7 +177,7 @@ def main():
             normal = -c["t9.stress_xx"] / 1e6
             ax.plot(ms, normal, lw=0.6, color="0.75", label="normal to the wall, raw")
             tu, nu = uniform(t, normal)
-            if len(tu) >= 16 and CUTOFF_HZ < 0.5 * (len(tu) - 1) / (tu[-1] - tu[0]):
+            if can_lowpass(tu):
                 _, pu = uniform(t, c["t9.pressure"] / 1e6)
                 ax.plot(tu * 1e3, lowpass(tu, nu, CUTOFF_HZ), lw=2.0, label=f"normal, {CUTOFF_HZ:g} Hz")
                 ax.plot(tu * 1e3, lowpass(tu, pu, CUTOFF_HZ), "--", lw=1.2, color="black",
@@ -277,15 +256,8 @@ def main():
         member_rows = {}
         mpath = os.path.join(out, "members.csv")
         if os.path.exists(mpath):
-            tm, cm = read_csv(mpath)
-            for title, member, axis, word in (("front wall", "front_wall", "x", "horizontal"),
-                                              ("floor", "floor", "y", "vertical")):
-                col = f"{member}.velocity_{axis}"
-                if col not in cm:
-                    continue
-                lp = filtered_acceleration(tm, cm[col])
-                member_rows[title] = (np.nanmax(np.abs(cm[col])),
-                                      np.nanmax(np.abs(lp[1])) / G if lp else float("nan"), word)
+            for title, (member, axis, word, vmax, lp) in member_average_motion(*read_csv(mpath)).items():
+                member_rows[title] = (vmax, np.nanmax(np.abs(lp[1])) / G if lp else float("nan"), word)
                 if lp:
                     srs_inputs[f"{title}, member average"] = (member, axis, lp)
         # Shock response spectra of the low-passed motion at mid-wall and mid-floor.

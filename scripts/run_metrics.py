@@ -5,7 +5,9 @@ One definition of each quantity, shared by `camouflet report`
 in-structure peak velocity and acceleration (Figs. 15-16), wall and floor
 deflections (Fig. 12) and final displacements, structural damage (Fig. 14),
 the apparent crater and the energy balance; and the TM 5-855-1 in-structure
-averages from `camouflet empirical --csv`. Standard library and NumPy only.
+averages from `camouflet empirical --csv`. Standard library and NumPy; the
+low-passed peaks take SciPy's filters through structure_shock.py (imported
+only where they are asked for).
 docs/buried-structure.md ("The report", "Parameter studies") states the
 definitions.
 """
@@ -31,6 +33,8 @@ EJECTA_SPEED = 10.0
 
 STRUCTURE_SETS = (("front wall", ("t1", "t2", "t3"), "x", "horizontal"),
                   ("floor", ("t3", "t4", "t5"), "y", "vertical"))
+# (title, members.csv name, axis, word): the member averages the TM 5-855-1 comparison reads.
+MEMBER_SETS = (("front wall", "front_wall", "x", "horizontal"), ("floor", "floor", "y", "vertical"))
 
 
 def read_csv(path):
@@ -170,6 +174,33 @@ def in_structure_peaks(cols):
         amax = max(_peak(cols[f"{g}.acceleration_{axis}"] / G) for g in targets)
         out[title] = (vmax, amax, word)
     return out
+
+
+def member_average_motion(tm, cm):
+    """{title: (member, axis, word, peak |velocity| [m/s], (t, acceleration low-passed [m/s^2]) or None)}
+    of the front wall's and the floor's member averages (members.csv: the span's mass-weighted mean),
+    the acceleration from the velocity's difference quotient (structure_shock.filtered_acceleration)."""
+    from structure_shock import filtered_acceleration
+
+    out = {}
+    for title, member, axis, word in MEMBER_SETS:
+        col = f"{member}.velocity_{axis}"
+        if col in cm and len(tm):
+            out[title] = (member, axis, word, _peak(cm[col]), filtered_acceleration(tm, cm[col]))
+    return out
+
+
+def interface_stress_peaks(t, cols):
+    """(raw, low-passed) peak compressive stress normal to the front wall at target 9 [Pa]
+    (Fig. 11: -stress_xx of the soil cell touching the wall), NaN where absent or too coarse."""
+    from structure_shock import filtered
+
+    nan = float("nan")
+    if "t9.stress_xx" not in cols or not len(t):
+        return nan, nan
+    normal = -cols["t9.stress_xx"]
+    lp = filtered(t, normal)
+    return float(np.nanmax(normal)), float(np.nanmax(lp[1])) if lp else nan
 
 
 def deflections(cols):
@@ -457,11 +488,21 @@ def run_metrics(outdir, camouflet=""):
     m["stop_reason"] = summary.get("stop_reason", "")
     m["energy_error"] = e.get("relative_error") if e.get("relative_error") is not None else nan
     gen = generator_parameters(os.path.join(outdir, "case.toml"))
-    peaks, defl, final = {}, None, {}
+    peaks, defl, final, t9 = {}, None, {}, (nan, nan)
     spath = os.path.join(outdir, "structure.csv")
     if os.path.exists(spath):
-        _, cols = read_csv(spath)
+        ts, cols = read_csv(spath)
         peaks, defl, final = in_structure_peaks(cols), deflections(cols), final_displacements(cols)
+        t9 = interface_stress_peaks(ts, cols)
+    members = {}
+    mpath = os.path.join(outdir, "members.csv")
+    if os.path.exists(mpath):
+        members = member_average_motion(*read_csv(mpath))
+    for title, key in (("front wall", "front_wall"), ("floor", "floor")):
+        _, _, _, v, lp = members.get(title, ("", "", "", nan, None))
+        m[f"{key}_member_peak_velocity_m_s"] = v
+        m[f"{key}_member_filtered_acceleration_g"] = float(np.nanmax(np.abs(lp[1]))) / G if lp else nan
+    m["t9_peak_normal_stress_MPa"], m["t9_filtered_normal_stress_MPa"] = (x / 1e6 for x in t9)
     for title, key in (("front wall", "front_wall"), ("floor", "floor")):
         v, a, _ = peaks.get(title, (nan, nan, ""))
         m[f"{key}_peak_velocity_m_s"] = v

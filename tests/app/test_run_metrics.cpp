@@ -6,6 +6,7 @@
 // box whose elements carry a prescribed damage.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -272,6 +273,57 @@ TEST(RunMetrics, CraterOfASyntheticThreeDimensionalOutput) {
   test::verify({"Apparent crater of a synthetic 3-D quarter bowl with ejecta above it: depth",
                 "the bowl's depth (by construction)", bowl_depth, std::stod(m.at("crater_depth_m")), 1e-6,
                 false, "m"});
+}
+
+// The member averages and the interface stress that the TM 5-855-1 comparison and the
+// structure-response study read (members.csv, structure.csv's t9), from synthetic histories
+// sampled every 50 us with the gauges' jitter (a row at the first cycle past each interval):
+// a smooth velocity pulse v = V sin^2(pi t / T) has its acceleration's peak V pi / T, which the
+// 1 kHz low-pass keeps (T = 10 ms: 100 Hz, gain 1 - 4e-5); the interface stress is a pulse of
+// peak P with a 5 kHz ripple of 0.3 P, which the low-pass removes (gain 0.004) and the raw peak keeps.
+TEST(RunMetrics, MemberAveragesAndInterfaceStressOfSyntheticHistories) {
+  if (test::run_camouflet_raw("/usr/bin/python3 -c 'import numpy, scipy'").status != 0)
+    GTEST_SKIP() << "python3-numpy or python3-scipy is not installed";
+  const fs::path dir = write_rz_output("run_metrics_members", synthetic_grid(),
+                                       "{\"final_time_s\": 0.02, \"stop_reason\": \"end time reached\"}\n");
+  constexpr double V = 0.5, T = 0.01, P = 2e6, ripple_hz = 5000.0;  // m/s, s, Pa, Hz
+  const double pi = std::acos(-1.0), g = 9.80665;
+  std::ofstream members(dir / "members.csv"), structure(dir / "structure.csv");
+  members << "time_s,front_wall.velocity_x,floor.velocity_y\n";
+  structure << "time_s,t9.stress_xx\n";
+  members.precision(17);
+  structure.precision(17);
+  double raw_peak = 0.0;
+  for (int k = 0; k <= 400; ++k) {
+    const double t = k * 5e-5 + (k % 3 == 1 ? 2e-7 : 0.0);
+    const double pulse = t < T ? std::pow(std::sin(pi * t / T), 2) : 0.0;
+    const double normal = P * pulse + 0.3 * P * std::sin(2.0 * pi * ripple_hz * t);
+    raw_peak = std::max(raw_peak, normal);
+    members << t << ',' << V * pulse << ',' << -2.0 * V * pulse << '\n';
+    structure << t << ',' << -normal << '\n';
+  }
+  members.close();
+  structure.close();
+
+  const auto m = metrics(dir);
+  ASSERT_TRUE(m.count("front_wall_member_peak_velocity_m_s")) << "no output";
+  test::verify({"Member average of a synthetic velocity pulse V sin^2(pi t/T): front wall, peak velocity",
+                "V = 0.5 m/s (by construction)", V, std::stod(m.at("front_wall_member_peak_velocity_m_s")),
+                1e-3, true, "m/s"});
+  test::verify({"Member average of a synthetic velocity pulse, T = 10 ms: front wall, 1 kHz low-passed "
+                "acceleration",
+                "V pi / T = 16.02 g (the pulse's 100 Hz lies in the pass band)", V * pi / T / g,
+                std::stod(m.at("front_wall_member_filtered_acceleration_g")), 5e-3, true, "g"});
+  test::verify({"Member average of a synthetic velocity pulse, T = 10 ms: floor (downwards, 2V), 1 kHz "
+                "low-passed acceleration",
+                "2 V pi / T = 32.04 g", 2.0 * V * pi / T / g,
+                std::stod(m.at("floor_member_filtered_acceleration_g")), 5e-3, true, "g"});
+  test::verify({"Interface stress at t9, a 2 MPa pulse with a 5 kHz ripple of 0.3 P: raw peak",
+                "the largest sample (by construction)", raw_peak / 1e6,
+                std::stod(m.at("t9_peak_normal_stress_MPa")), 1e-9, true, "MPa"});
+  test::verify({"Interface stress at t9, a 2 MPa pulse with a 5 kHz ripple of 0.3 P: 1 kHz low-passed peak",
+                "P = 2 MPa (the ripple attenuated to 0.4 %)", P / 1e6,
+                std::stod(m.at("t9_filtered_normal_stress_MPa")), 5e-3, true, "MPa"});
 }
 
 }  // namespace

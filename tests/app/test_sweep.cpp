@@ -217,6 +217,13 @@ TEST(SweepCommand, RunsEveryCaseAndRecordsTheFailedOnes) {
                              "status",
                              "message",
                              "wall_s",
+                             "front_wall_member_peak_velocity_m_s",
+                             "floor_member_peak_velocity_m_s",
+                             "front_wall_member_filtered_acceleration_g",
+                             "t9_peak_normal_stress_MPa",
+                             "t9_filtered_normal_stress_MPa",
+                             "front_wall_lower_mean_damage",
+                             "front_wall_upper_mean_damage",
                              "front_wall_peak_velocity_m_s",
                              "floor_peak_velocity_m_s",
                              "front_wall_peak_acceleration_g",
@@ -266,6 +273,10 @@ TEST(SweepCommand, RunsEveryCaseAndRecordsTheFailedOnes) {
     EXPECT_TRUE(fs::exists(out / row->at("case") / "summary.json"));
     EXPECT_TRUE(fs::exists(out / row->at("case") / "input.params.toml"));
   }
+  // The member average and the interface stress grow with the charge too.
+  EXPECT_GT(std::stod(heavy.at("front_wall_member_peak_velocity_m_s")),
+            std::stod(light.at("front_wall_member_peak_velocity_m_s")));
+  EXPECT_GT(std::stod(heavy.at("t9_peak_normal_stress_MPa")), std::stod(light.at("t9_peak_normal_stress_MPa")));
   // The TM-5 averages grow with the charge too.
   EXPECT_GT(std::stod(heavy.at("tm5_velocity_low_m_s")), std::stod(light.at("tm5_velocity_low_m_s")));
   if (test::run_camouflet_raw("/usr/bin/python3 -c 'import matplotlib'").status == 0) {

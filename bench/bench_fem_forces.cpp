@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fem/fem_elements.hpp"
+#include "fem_assemblies.hpp"
 #include "mesh/block_generator.hpp"
 
 namespace {
@@ -43,12 +44,13 @@ struct ForceProblem {
 template <int D>
 void element_forces(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(1)));
-  set_default_force_assembly(static_cast<ForceAssembly>(state.range(2)));
+  const auto assembly = static_cast<bench::Assembly>(state.range(2));
   ForceProblem<D> p(static_cast<int>(state.range(0)));
+  bench::AssemblyScratch scratch;
   const HourglassControl hg{HourglassForm::viscous, 0.1};
   for (auto _ : state) {
-    p.elements.add_internal_forces(p.mesh.coordinates.data(), p.velocity.data(), p.force.data(),
-                                   p.hourglass_force.data(), hg, 1e-6);
+    bench::add_internal_forces(assembly, p.elements, p.mesh.coordinates.data(), p.velocity.data(),
+                               p.force.data(), p.hourglass_force.data(), hg, 1e-6, scratch);
     benchmark::DoNotOptimize(p.force.data());
     benchmark::ClobberMemory();
   }
@@ -58,7 +60,7 @@ void element_forces(benchmark::State& state) {
 
 }  // namespace
 
-// Arguments: cells per direction, threads, assembly (ForceAssembly: 0 buffers, 1 colours, 2 colour_blocks).
+// Arguments: cells per direction, threads, assembly (bench::Assembly: 0 buffers, 1 colours, 2 colour_blocks).
 void arguments(benchmark::internal::Benchmark* b, int cells) {
   for (int threads : {1, 2})
     for (int assembly : {0, 1, 2}) b->Args({cells, threads, assembly});

@@ -2,14 +2,12 @@
 // of bench/bench_problems.hpp, runs it on the requested thread count and
 // prints ONE JSON line with the grind time.
 //
-//   camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly buffers|colours|colour_blocks]
+//   camouflet_bench PROBLEM --threads N [--size S] [--steps K]
 //   PROBLEM: taylor_bar | hex_impact | sedov_hex | soil_axisymmetric | buried_coarse | buried_coarse3d |
 //            buried_default | buried_paper (the cases of cases/wang2005/ to 70 ms)
 // Each line also says what was measured and where: commit, build type and flags, compiler,
 // host and CPU model, thread count, the load average at the start, and the problem's
 // parameters (bench/bench_problems.hpp), so that a line read months later can be compared.
-// --assembly: how the FEM element forces are assembled on threads
-// (fem_elements.hpp, ForceAssembly); the line then carries an "assembly" key.
 //
 // Grind time = time / (size x cycles): wall_ns is the wall time, cpu_ns the
 // CPU time of all threads (getrusage), i.e. the per-core cost; on a shared,
@@ -99,7 +97,6 @@ std::string cpu_model() {
 #endif
 
 double load_at_start = -1.0;
-const char* assembly_name = nullptr;  // --assembly, if given
 
 void print(const Result& r, int threads) {
   rusage u{};
@@ -114,7 +111,6 @@ void print(const Result& r, int threads) {
                 1e9 * r.cpu_s / (work * r.neighbours));
   if (!r.parameters.empty()) std::printf("\"parameters\":\"%s\",", json_text(r.parameters).c_str());
   if (!r.note.empty()) std::printf("\"note\":\"%s\",", json_text(r.note).c_str());
-  if (assembly_name) std::printf("\"assembly\":\"%s\",", assembly_name);
   std::printf("\"commit\":\"%s\",\"build_type\":\"%s\",\"flags\":\"%s\",\"compiler\":\"%s\",",
               json_text(CAMOUFLET_BENCH_COMMIT).c_str(), json_text(CAMOUFLET_BENCH_BUILD_TYPE).c_str(),
               json_text(CAMOUFLET_BENCH_FLAGS).c_str(), json_text(__VERSION__).c_str());
@@ -211,8 +207,7 @@ bool buried_case(const std::string& name, int threads, long steps, Result& r) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: camouflet_bench PROBLEM --threads N [--size S] [--steps K] [--assembly "
-               "buffers|colours|colour_blocks]\n"
+               "usage: camouflet_bench PROBLEM --threads N [--size S] [--steps K]\n"
                "  PROBLEM: taylor_bar | hex_impact | sedov_hex | soil_axisymmetric | buried_coarse | "
                "buried_coarse3d | buried_default | buried_paper\n");
   return 2;
@@ -233,17 +228,7 @@ int main(int argc, char** argv) {
       size = std::atol(argv[++i]);
     else if (!std::strcmp(argv[i], "--steps") && has_value)
       steps = std::atol(argv[++i]);
-    else if (!std::strcmp(argv[i], "--assembly") && has_value) {
-      assembly_name = argv[++i];
-      if (!std::strcmp(assembly_name, "buffers"))
-        set_default_force_assembly(ForceAssembly::buffers);
-      else if (!std::strcmp(assembly_name, "colours"))
-        set_default_force_assembly(ForceAssembly::colours);
-      else if (!std::strcmp(assembly_name, "colour_blocks"))
-        set_default_force_assembly(ForceAssembly::colour_blocks);
-      else
-        return usage();
-    } else
+    else
       return usage();
   }
   if (threads < 1 || size < 0 || steps < 0) return usage();

@@ -1,12 +1,12 @@
 // FEM element set-up and bookkeeping: reference geometry, wave speeds, ring
-// factors, hourglass control per element, the force-assembly choice. The
-// per-cycle loops are in fem_forces.cpp and fem_kinematics.cpp.
+// factors, hourglass control per element, the colour blocks of the force
+// assembly. The per-cycle loops are in fem_forces.cpp, element_forces.cpp and
+// fem_kinematics.cpp.
 #include "fem/fem_elements.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -14,20 +14,6 @@
 #include "fem/element_gather.hpp"
 
 namespace camouflet {
-
-namespace {
-
-std::atomic<ForceAssembly> default_assembly{ForceAssembly::colour_blocks};
-
-}  // namespace
-
-ForceAssembly default_force_assembly() {
-  return default_assembly.load();
-}
-
-void set_default_force_assembly(ForceAssembly assembly) {
-  default_assembly.store(assembly);
-}
 
 template <int D>
 FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::vector<double>& coordinates)
@@ -65,7 +51,7 @@ FemElements<D>::FemElements(const FemMesh& mesh, GeometryMode mode, const std::v
     length[e] = l;
   }
   node_count_ = coordinates.size() / D;
-  set_assembly(default_force_assembly());
+  colour_if_needed();
 }
 
 template <int D>
@@ -92,11 +78,9 @@ void FemElements<D>::set_speeds(const double* v) {
 }
 
 template <int D>
-void FemElements<D>::set_assembly(ForceAssembly assembly) {
-  assembly_ = assembly;
-  const std::size_t block = assembly == ForceAssembly::colour_blocks ? colour_block_size(size()) : 1;
-  if (assembly != ForceAssembly::buffers &&
-      (colouring_.block != block || colouring_.begin.back() * block < size()))
+void FemElements<D>::colour_if_needed() {
+  const std::size_t block = colour_block_size(size());
+  if (colouring_.block != block || colouring_.begin.back() * block < size())
     colouring_ = colour_elements(connectivity, nodes, node_count_, block);
 }
 

@@ -16,6 +16,9 @@
 
 namespace camouflet {
 
+template <int D>
+class ElementForceKernel;
+
 struct ViscosityControl {
   double quadratic = 1.5;  // c_quadratic
   double linear = 0.06;    // c_linear
@@ -24,24 +27,14 @@ struct ViscosityControl {
   bool along_acceleration = false;
 };
 
-// How add_internal_forces assembles nodal forces on several threads without
-// write conflicts (docs/performance.md, "Colouring against per-thread
-// buffers"). All give the same forces to round-off.
-//   buffers:       packs of consecutive elements; each thread scatters into its
-//                  own zeroed copy of the force array, the copies are added in
-//                  thread order after the loop (the sums depend on the thread
-//                  count by round-off);
-//   colours:       packs of 8 elements of one colour (element_colouring.hpp),
-//                  one colour after the other, scattered straight into the
-//                  force array (the same sums on any thread count);
-//   colour_blocks: the same with blocks of colour_block_size() consecutive
-//                  elements as the coloured unit, which keeps the element
-//                  order's memory locality. The default: as fast as the buffers
-//                  on one thread, faster on two, and the same bits on any
-//                  thread count.
-// An internal switch, not a case key: the physics is the same, only the speed
-// differs, and the faster is the default. The benchmark command selects it.
-enum class ForceAssembly { buffers, colours, colour_blocks };
+// add_internal_forces assembles the nodal forces on several threads without
+// write conflicts by colour blocks: blocks of colour_block_size() consecutive
+// elements coloured so that no two blocks of a colour share a node
+// (element_colouring.hpp), one colour after the other. Each node adds its
+// elements' forces in the same order on any thread count (the same bits), and
+// the blocks keep the element order's memory locality: as fast as per-thread
+// buffers on one thread, faster on two (docs/performance.md, "Colouring against
+// per-thread buffers"; bench/fem_assemblies.hpp keeps the other assemblies).
 
 // Elements per colour block: 512 (64 packs of 8), fewer in small meshes so that there are at
 // least 64 blocks to share among the threads; a multiple of 8. Depends on the mesh only, so
@@ -50,10 +43,6 @@ inline std::size_t colour_block_size(std::size_t elements) {
   const std::size_t block = elements / 64 / 8 * 8;
   return block < 8 ? 8 : (block > 512 ? 512 : block);
 }
-
-// The assembly of the FemElements built from now on (process-wide, for the benchmark command).
-ForceAssembly default_force_assembly();
-void set_default_force_assembly(ForceAssembly assembly);
 
 struct KinematicsResult {
   std::int64_t bad_element = -1;  // 0-based; first element with non-positive or non-finite volume
@@ -79,10 +68,11 @@ class FemElements {
   FemElements(const FemMesh& mesh, GeometryMode mode, const std::vector<double>& coordinates);
 
   std::size_t size() const { return material.size(); }
-  ForceAssembly assembly() const { return assembly_; }
-  // Selects the assembly; the colouring is computed once, when first needed.
-  void set_assembly(ForceAssembly assembly);
-  const ElementColouring& colouring() const { return colouring_; }
+  // The colour blocks of the force assembly (computed when first needed).
+  const ElementColouring& colouring() {
+    colour_if_needed();
+    return colouring_;
+  }
   bool axisymmetric() const { return axisymmetric_; }
 
   // f (n*D) += internal forces at the positions x (t_n), stresses `stress`
@@ -156,11 +146,10 @@ class FemElements {
  private:
   bool axisymmetric_ = false;
   std::size_t node_count_ = 0;
-  ForceAssembly assembly_ = ForceAssembly::buffers;
-  // Per-thread force buffers of the threaded assembly (threads 1..T-1), kept zeroed.
-  std::vector<std::vector<double>> thread_force_, thread_hourglass_force_;
-  // Colour assemblies: the colouring, and the stiffness-form energy of each of its packs or blocks
-  // (added in their order after the loop, so that it too does not depend on the thread count).
+  friend class ElementForceKernel<D>;  // reads the geometry mode and the ring factors
+  void colour_if_needed();
+  // The colour blocks, and the stiffness-form energy of each block (added in their order after
+  // the loop, so that it too does not depend on the thread count).
   ElementColouring colouring_;
   std::vector<double> pack_stored_;
   bool area_weighted_ = false;

@@ -15,18 +15,18 @@ void Solver<D>::add_coupling_forces() {
   if (join_) join_->add_reactions(*particles_, force_.data());  // reactions on the joined nodes
   if (particles_ && !contact_.empty())
     contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(),
-                                    0.5 * (dt_ + dt_next_));
+                                    centred_step());
 }
 
 template <int D>
 void Solver<D>::kick_particles() {
-  if (particles_) particles_->kick(0.5 * (dt_ + dt_next_));  // the nodes' dt_mean
+  if (particles_) particles_->kick(centred_step());  // the nodes' interval
 }
 
 template <int D>
 void Solver<D>::drift_particles() {
   // The particles' kinetic energy at t_n in the centred form, before they move (the nodes' is
-  // taken in account_energy_and_advance_positions, which adds this one).
+  // taken in drift_nodes_and_account_energy, which adds this one).
   split_.sph_kinetic = particles_ ? particles_->centred_kinetic_energy() : 0.0;
   if (particles_) particles_->drift(dt_next_);
 }

@@ -204,13 +204,13 @@ void Solver<D>::step() {
     advance_velocities();    // FEM: a = F / m, v(n+1/2) by the central difference
     kick_particles();        // SPH: v(n+1/2), the pair heating
     constrain_velocities();  // dashpots, fixed, prescribed, symmetry, axis; the join settles
-    // Energies at t_n and positions at t_(n+1); the clock moves on.
-    drift_particles();       // SPH: centred kinetic energy, x(n+1)
-    // FEM: x(n+1) = x(n) + v(n+1/2) dt, each node checked finite and inside the domain box in the
-    // same pass; the energy balance; time, cycle and dt.
-    account_energy_and_advance_positions();
-    check_particles();       // the particles' half of check_nodes_and_particles (solver_checks.cpp)
-    check_axis_crossings();  // r-z: a node across the axis is reported (a warning)
+    // Energies at t_n and positions at t_(n+1).
+    drift_particles();                 // SPH: centred kinetic energy, x(n+1)
+    drift_nodes_and_account_energy();  // FEM: x(n+1) = x(n) + v(n+1/2) dt; the energy balance at t_n
+    advance_clock();                   // t_(n+1), the cycle count, dt(n+1/2)
+    check_drifted_nodes();             // finite and inside the domain box (found by the drift's pass)
+    check_particles();                 // the particles' half of check_nodes_and_particles (solver_checks.cpp)
+    check_axis_crossings();            // r-z: a node across the axis is reported (a warning)
     // Kinematics and material state at t_(n+1).
     particle_kinematics();   // SPH: eta, rho, h, D, W and their material update (sph/)
     element_kinematics();    // FEM: V, rho at t_(n+1); D, W, q at mid-step
@@ -256,7 +256,7 @@ void Solver<D>::add_element_forces() {
 template <int D>
 void Solver<D>::advance_velocities() {
   // Leapfrog with variable steps: the impulse at t_n spans the mean of the two half steps.
-  const double dt_mean = 0.5 * (dt_ + dt_next_);
+  const double dt_mean = centred_step();
   const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
 #pragma omp parallel for schedule(static) if (nn > parallel_threshold_nodes)
   for (std::int64_t n = 0; n < nn; ++n) {
@@ -275,7 +275,7 @@ void Solver<D>::advance_velocities() {
 
 template <int D>
 void Solver<D>::constrain_velocities() {
-  const double dt_mean = 0.5 * (dt_ + dt_next_);
+  const double dt_mean = centred_step();
   // Transmitting boundaries first: centred dashpots on v(n+1/2) (boundary/transmitting_boundary.hpp).
   if (relaxing_) hold_charges_still();
   if (!transmitting_.empty() && relaxing_) {
@@ -302,7 +302,7 @@ void Solver<D>::constrain_velocities() {
 }
 
 template <int D>
-void Solver<D>::account_energy_and_advance_positions() {
+void Solver<D>::drift_nodes_and_account_energy() {
   // Kinetic energy at t_n in the form the central difference conserves:
   // (1/2) m (v_n^2 - a^2 dt-^2 / 4) with v_n = v(n-1/2) + a dt- / 2 and a the
   // applied (constrained) acceleration; for equal steps it is (1/2) m
@@ -310,13 +310,14 @@ void Solver<D>::account_energy_and_advance_positions() {
   // does not disturb it. The
   // viscous hourglass work from t_(n-1) to t_n is the trapezoid of its forces
   // against v(n-1/2), the same centring as the internal energy's.
-  // The same pass moves each node (x(n+1) = x(n) + v(n+1/2) dt) and checks it
-  // (check_nodes_and_particles' test): the node arrays are read once. The
+  // The same pass moves each node (x(n+1) = x(n) + v(n+1/2) dt) and tests it
+  // (check_nodes_and_particles' test; check_drifted_nodes reports the first
+  // failed one once the clock has moved on): the node arrays are read once. The
   // energy sums keep their grouping (one thread's share per contiguous block
   // of nodes, the threshold of the former energy loop).
   const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
   const bool hourglass = !hourglass_force_.empty();
-  const double dt_minus = dt_, dt_mean = 0.5 * (dt_ + dt_next_);
+  const double dt_minus = dt_, dt_mean = centred_step();
   const double dt = dt_next_;
   double kinetic = 0.0, hourglass_power = 0.0;
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
@@ -356,12 +357,21 @@ void Solver<D>::account_energy_and_advance_positions() {
   const double scale = std::max(e.initial_total + std::abs(e.boundary_work), std::abs(total));
   e.relative_error = scale > 0.0 ? std::abs(total - e.initial_total - e.boundary_work) / scale : 0.0;
 
-  dt_ = dt;
-  time_ += dt;
-  ++cycle_;
-  if (bad != std::numeric_limits<std::int64_t>::max()) fail_node(bad);
-  nodes_checked_cycle_ = cycle_;
+  drifted_bad_node_ = bad == std::numeric_limits<std::int64_t>::max() ? -1 : bad;
   node_forces_zeroed_ = true;  // force_ in advance_velocities, hourglass_force_previous_ above
+}
+
+template <int D>
+void Solver<D>::advance_clock() {
+  dt_ = dt_next_;
+  time_ += dt_;
+  ++cycle_;
+}
+
+template <int D>
+void Solver<D>::check_drifted_nodes() {
+  if (drifted_bad_node_ >= 0) fail_node(drifted_bad_node_);
+  nodes_checked_cycle_ = cycle_;
 }
 
 template <int D>

@@ -129,7 +129,11 @@ class Solver {
   void kick_particles();
   void constrain_velocities();
   void drift_particles();
-  void account_energy_and_advance_positions();
+  void drift_nodes_and_account_energy();
+  void advance_clock();        // dt, time and cycle move on to the step just taken
+  void check_drifted_nodes();  // the first node the drift found non-finite or outside the box stops the run
+  // t_(n+1/2) - t_(n-1/2): the interval of the velocity update at t_n (central difference).
+  double centred_step() const { return 0.5 * (dt_ + dt_next_); }
   void particle_kinematics();
   void element_kinematics();
   void update_materials();
@@ -187,11 +191,12 @@ class Solver {
   double time_ = 0.0;
   std::int64_t cycle_ = 0;
   // The cycle whose end state (x(n+1), v(n+1/2)) the node pass of
-  // account_energy_and_advance_positions found finite and inside the domain
+  // drift_nodes_and_account_energy found finite and inside the domain
   // box; -1 once anything else may have written the nodes (the non-const
   // velocity(), visit_state). A FEM-only step skips its start check of the
   // nodes while this equals cycle_: nothing writes them in between.
   std::int64_t nodes_checked_cycle_ = -1;
+  std::int64_t drifted_bad_node_ = -1;  // the drift's first failed node (0-based), -1: none
   // force_ and hourglass_force_previous_ hold zeros: the node passes zero them
   // at their last read in a step, so add_element_forces need not fill them again
   // (false after a restore: a checkpoint holds the forces of its last step).

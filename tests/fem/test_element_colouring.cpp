@@ -1,8 +1,9 @@
 // Element colouring for the force assembly (fem/element_colouring.hpp):
 // the colouring itself (every element once, no two elements, or blocks of
 // elements, of a colour sharing a node), and the assemblies of
-// FemElements::add_internal_forces against each other: per-thread buffers and
-// colours (single elements or blocks) give the same nodal forces to round-off
+// FemElements::add_internal_forces (colour blocks) and the two kept for
+// comparison in bench/fem_assemblies.hpp: per-thread buffers and colours
+// (single elements or blocks) give the same nodal forces to round-off
 // (1e-12 relative), and the colour assemblies the same bits on 1 and 2 threads
 // (each node sums its elements in colour order whatever the threads).
 // Meshes: distorted blocks of 16^3 hexes and 64 x 64 axisymmetric quads, above
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "../../bench/bench_problems.hpp"
+#include "../../bench/fem_assemblies.hpp"
 #include "common/history_difference.hpp"
 #include "common/verification.hpp"
 #include "fem/element_colouring.hpp"
@@ -60,9 +62,8 @@ struct ForceCase {
   }
 
   // Elements with a random stress, q and material state (the same draw every call).
-  FemElements<D> elements(ForceAssembly assembly) const {
+  FemElements<D> elements() const {
     FemElements<D> el(mesh, D == 2 ? GeometryMode::axisymmetric : GeometryMode::three_d, mesh.coordinates);
-    el.set_assembly(assembly);
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (std::size_t e = 0; e < el.size(); ++e) {
@@ -77,16 +78,17 @@ struct ForceCase {
 
   // Nodal forces and hourglass forces of two calls (the stiffness form needs a second call
   // to have displacements to resist), on `threads` threads; the stored energy appended.
-  std::vector<double> forces(ForceAssembly assembly, HourglassForm form, int threads) const {
+  std::vector<double> forces(bench::Assembly assembly, HourglassForm form, int threads) const {
     omp_set_num_threads(threads);
-    FemElements<D> el = elements(assembly);
+    FemElements<D> el = elements();
+    bench::AssemblyScratch scratch;
     const std::size_t values = mesh.coordinates.size();
     std::vector<double> f(values, 0.0), fh(values, 0.0);
     const HourglassControl hg{form, 0.1};
     double stored = 0.0;
     for (int call = 0; call < 2; ++call)
-      stored =
-          el.add_internal_forces(mesh.coordinates.data(), velocity.data(), f.data(), fh.data(), hg, 1e-6);
+      stored = bench::add_internal_forces(assembly, el, mesh.coordinates.data(), velocity.data(), f.data(),
+                                          fh.data(), hg, 1e-6, scratch);
     f.insert(f.end(), fh.begin(), fh.end());
     f.push_back(stored);
     return f;
@@ -137,11 +139,11 @@ template <int D>
 void check_assemblies(const std::string& name, HourglassForm form) {
   const ForceCase<D> problem;
   const int threads_before = omp_get_max_threads();
-  const auto buffers_1 = problem.forces(ForceAssembly::buffers, form, 1);
-  const auto buffers_2 = problem.forces(ForceAssembly::buffers, form, 2);
+  const auto buffers_1 = problem.forces(bench::Assembly::buffers, form, 1);
+  const auto buffers_2 = problem.forces(bench::Assembly::buffers, form, 2);
   EXPECT_GT(*std::max_element(buffers_1.begin(), buffers_1.end()), 1.0);  // not trivially zero
-  for (const ForceAssembly assembly : {ForceAssembly::colours, ForceAssembly::colour_blocks}) {
-    const std::string kind = assembly == ForceAssembly::colours ? "colour" : "colour-block";
+  for (const bench::Assembly assembly : {bench::Assembly::colours, bench::Assembly::colour_blocks}) {
+    const std::string kind = assembly == bench::Assembly::colours ? "colour" : "colour-block";
     const auto colours_1 = problem.forces(assembly, form, 1);
     const auto colours_2 = problem.forces(assembly, form, 2);
     test::verify({name + ": nodal forces, " + kind + " assembly against per-thread buffers (1 thread)",

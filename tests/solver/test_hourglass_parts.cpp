@@ -67,19 +67,10 @@ Model blocks(int only, std::int64_t max_cycles = std::numeric_limits<std::int64_
   return model;
 }
 
-// The per-thread buffer assembly for the comparison: it adds each node's element forces in element
-// order, the same in the pair and in a block alone. The default colour-block assembly adds them in
-// colour order, and the pair's mesh is coloured differently from a block's (round-off apart).
-struct BufferAssembly {
-  ForceAssembly saved = default_force_assembly();
-  BufferAssembly() { set_default_force_assembly(ForceAssembly::buffers); }
-  ~BufferAssembly() { set_default_force_assembly(saved); }
-};
 
 template <int D>
 void expect_pair_as_each_alone(const std::string& label) {
   test::use_threads(1);
-  const BufferAssembly assembly;
   const Model pair_model = blocks<D>(-1);
   Solver<D> pair(pair_model);
   std::vector<std::unique_ptr<Solver<D>>> alone;

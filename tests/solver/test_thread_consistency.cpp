@@ -7,7 +7,7 @@
 //   fem/element_colouring.hpp), so each node adds its elements in the same
 //   order on any thread count: since 5fe2477 (22 Nov 2026) the histories are bit-identical
 //   (measured 0). The check stays within 1e-12 relative to the history's peak,
-//   which the per-thread buffer assembly (ForceAssembly::buffers: the same
+//   which the per-thread buffer assembly (bench/fem_assemblies.hpp: the same
 //   element forces in another grouping) also meets.
 // * SPH: the pair sums are pair-symmetric (each pair once, sph_forces.cpp):
 //   each thread scatters into its own copy of the particle sums, added in

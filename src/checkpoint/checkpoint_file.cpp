@@ -118,20 +118,28 @@ void write_checkpoint(const fs::path& path, const CheckpointData& data) {
   quiet_hdf5();
   fs::path tmp = path;
   tmp += ".tmp";
-  const hid_t file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // No creation and modification times in the object headers: the same state makes the same
+  // bytes, so two runs' checkpoints compare with cmp (scripts/byte-compare.sh).
+  const hid_t file_props = H5Pcreate(H5P_FILE_CREATE);
+  H5Pset_obj_track_times(file_props, false);
+  const hid_t file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, file_props, H5P_DEFAULT);
+  H5Pclose(file_props);
   if (file < 0) io_fail("cannot create checkpoint", tmp, errno ? errno : EIO);
+  const hid_t dataset_props = H5Pcreate(H5P_DATASET_CREATE);
+  H5Pset_obj_track_times(dataset_props, false);
   bool ok = true;
   for (const auto& [name, a] : data.arrays) {
     const hsize_t dims[2] = {a.count, a.width};
     const hid_t space = H5Screate_simple(2, dims, nullptr);
     const hid_t type = native_type(a.type);
-    const hid_t dset = H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t dset = H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, dataset_props, H5P_DEFAULT);
     ok = dset >= 0 &&
          (a.bytes.empty() || H5Dwrite(dset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, a.bytes.data()) >= 0);
     if (dset >= 0) H5Dclose(dset);
     H5Sclose(space);
     if (!ok) break;
   }
+  H5Pclose(dataset_props);
   if (ok) {
     const int version = checkpoint_format_version;
     const std::uint64_t sum = data.checksum();

@@ -28,9 +28,9 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
     relaxation_held_materials_[m] = model_.materials[m].material->eos().programmed_burn() ? 1 : 0;
   relaxation_held_nodes_.clear();
   constexpr int N = FemElements<D>::nodes;
-  for (std::size_t e = 0; e < elements_.size(); ++e)
-    if (relaxation_held_materials_[static_cast<std::size_t>(elements_.material[e])])
-      for (int a = 0; a < N; ++a) relaxation_held_nodes_.push_back(elements_.connectivity[e * N + a]);
+  for (std::size_t e = 0; e < fem_.elements.size(); ++e)
+    if (relaxation_held_materials_[static_cast<std::size_t>(fem_.elements.material[e])])
+      for (int a = 0; a < N; ++a) relaxation_held_nodes_.push_back(fem_.elements.connectivity[e * N + a]);
   std::sort(relaxation_held_nodes_.begin(), relaxation_held_nodes_.end());
   relaxation_held_nodes_.erase(std::unique(relaxation_held_nodes_.begin(), relaxation_held_nodes_.end()),
                                relaxation_held_nodes_.end());
@@ -43,7 +43,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
     ++r.cycles;
     r.time += dt_;
     const double factor = std::exp(-rate * dt_);
-    for (double& v : velocity_) v *= factor;
+    for (double& v : fem_.velocity) v *= factor;
     if (particles_) particles_->scale_velocities(factor);
     const double kinetic = energy_.kinetic;  // at t_n of this cycle, before its damping
     r.peak_kinetic = std::max(r.peak_kinetic, kinetic);
@@ -73,7 +73,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
 
   // At rest where it stands: the transient counts its displacements, time, cycles and energy
   // from here.
-  for (auto* field : {&velocity_, &velocity_old_, &acceleration_, &displacement_})
+  for (auto* field : {&fem_.velocity, &fem_.velocity_old, &fem_.acceleration, &fem_.displacement})
     std::fill(field->begin(), field->end(), 0.0);
   if (particles_) particles_->come_to_rest();
   time_ = 0.0;
@@ -82,8 +82,8 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
   nodes_checked_cycle_ = -1;
   energy_ = EnergyBalance{};
   split_ = EnergySplit{};
-  hourglass_dissipated_ = 0.0;
-  elements_.set_speeds(velocity_.data());
+  fem_.hourglass_dissipated = 0.0;
+  fem_.elements.set_speeds(fem_.velocity.data());
   gather_element_state();
   // The boundary now holds the relaxed state's load, which differs from the initial one where
   // the relaxation moved the soil next to it.
@@ -95,7 +95,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
 template <int D>
 void Solver<D>::hold_charges_still() {
   for (const std::int64_t n : relaxation_held_nodes_)
-    for (int i = 0; i < D; ++i) velocity_[static_cast<std::size_t>(n * D + i)] = 0.0;
+    for (int i = 0; i < D; ++i) fem_.velocity[static_cast<std::size_t>(n * D + i)] = 0.0;
   if (particles_ && std::any_of(relaxation_held_materials_.begin(), relaxation_held_materials_.end(),
                                 [](char c) { return c; }))
     particles_->hold_still(relaxation_held_materials_);

@@ -14,16 +14,16 @@ void Solver<D>::add_gravity() {
   const std::array<double, 3>& g = model_.run.gravity;
   // The work of the constant force over the step t_(n-1) -> t_n is m g . v(n-1/2) dt(n-1/2),
   // exactly m g . (x_n - x_(n-1)): the booked work is the loss of potential energy, the form the
-  // central difference's kinetic energy at t_n balances. velocity_ still holds v(n-1/2) here.
-  const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
+  // central difference's kinetic energy at t_n balances. fem_.velocity still holds v(n-1/2) here.
+  const std::int64_t nn = static_cast<std::int64_t>(fem_.node_mass.size());
   double power = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : power) if (nn > parallel_threshold_nodes)
   for (std::int64_t n = 0; n < nn; ++n) {
-    const double m = node_mass_[static_cast<std::size_t>(n)];
+    const double m = fem_.node_mass[static_cast<std::size_t>(n)];
     for (int i = 0; i < D; ++i) {
       const std::size_t k = static_cast<std::size_t>(n * D + i);
-      force_[k] += m * g[static_cast<std::size_t>(i)];
-      power += m * g[static_cast<std::size_t>(i)] * velocity_[k];
+      fem_.force[k] += m * g[static_cast<std::size_t>(i)];
+      power += m * g[static_cast<std::size_t>(i)] * fem_.velocity[k];
     }
   }
   if (particles_) {
@@ -45,7 +45,7 @@ void Solver<D>::add_static_boundary_forces() {
   // gravity, and after a dynamic relaxation under the t = 0 loads with or without it. Boundaries
   // that hold nothing have no static forces.
   if (transmitting_.empty()) return;
-  const double static_work = transmitting_.add_static_forces(velocity_.data(), dt_, force_.data());
+  const double static_work = transmitting_.add_static_forces(fem_.velocity.data(), dt_, fem_.force.data());
   energy_.boundary_work += static_work;
   split_.transmitting += static_work;
 }
@@ -58,13 +58,13 @@ void Solver<D>::hold_transmitting_boundaries(bool relaxed) {
   // Each node's internal force plus its weight in the initial state: what the soil beyond a
   // transmitting boundary held, which the boundary now holds in its place. A load applied to the
   // boundary's own nodes is not part of the hold (the dashpots see its effect as motion).
-  std::vector<double> unbalanced(position_.size(), 0.0);
-  if (elements_.area_weighted_momentum()) elements_.update_ring_factors(position_.data());
-  elements_.add_internal_forces(position_.data(), velocity_.data(), unbalanced.data(), nullptr, hourglass_, 0.0);
+  std::vector<double> unbalanced(fem_.position.size(), 0.0);
+  if (fem_.elements.area_weighted_momentum()) fem_.elements.update_ring_factors(fem_.position.data());
+  fem_.elements.add_internal_forces(fem_.position.data(), fem_.velocity.data(), unbalanced.data(), nullptr, fem_.hourglass, 0.0);
   const std::array<double, 3>& g = model_.run.gravity;
-  for (std::size_t n = 0; n < node_mass_.size(); ++n)
+  for (std::size_t n = 0; n < fem_.node_mass.size(); ++n)
     for (int i = 0; i < D; ++i)
-      unbalanced[n * D + static_cast<std::size_t>(i)] += node_mass_[n] * g[static_cast<std::size_t>(i)];
+      unbalanced[n * D + static_cast<std::size_t>(i)] += fem_.node_mass[n] * g[static_cast<std::size_t>(i)];
   transmitting_.hold_initial_state(unbalanced.data());
 }
 

@@ -1,6 +1,6 @@
 // The SPH and coupling stages of step() (solver.cpp lists them all): the particle package's
-// forces, kick, drift and kinematics, and the join's and the contact's forces between the
-// particles and the FEM nodes.
+// forces, kick, drift and kinematics, the join's and the contact's forces between the
+// particles and the FEM nodes, and the join following the FEM package's erosion.
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -12,9 +12,9 @@ void Solver<D>::add_particle_forces() {
 
 template <int D>
 void Solver<D>::add_coupling_forces() {
-  if (join_) join_->add_reactions(*particles_, force_.data());  // reactions on the joined nodes
+  if (join_) join_->add_reactions(*particles_, fem_.force.data());  // reactions on the joined nodes
   if (particles_ && !contact_.empty())
-    contact_power_ = contact_.apply(*particles_, position_.data(), velocity_.data(), force_.data(),
+    contact_power_ = contact_.apply(*particles_, fem_.position.data(), fem_.velocity.data(), fem_.force.data(),
                                     centred_step());
 }
 
@@ -37,6 +37,12 @@ void Solver<D>::particle_kinematics() {
   if (particles_) particles_->update_state(dt_, time_);
 }
 
+template <int D>
+void Solver<D>::erode_elements() {
+  // The SPH-FEM interface loses the eroded elements' faces and gains those they exposed.
+  if (fem_.erode(dt_, energy_.eroded) && join_) join_->follow_erosion();
+}
+
 template void Solver<2>::add_particle_forces();
 template void Solver<3>::add_particle_forces();
 template void Solver<2>::add_coupling_forces();
@@ -47,5 +53,7 @@ template void Solver<2>::drift_particles();
 template void Solver<3>::drift_particles();
 template void Solver<2>::particle_kinematics();
 template void Solver<3>::particle_kinematics();
+template void Solver<2>::erode_elements();
+template void Solver<3>::erode_elements();
 
 }  // namespace camouflet

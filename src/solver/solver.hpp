@@ -3,10 +3,12 @@
 // over FEM elements and SPH particles, driven one step at a time. run_model()
 // drives it to the end time with output; tests drive it cycle by cycle.
 //
-// step() lists its stages; each names the method it serves. The solver owns
-// the FEM node arrays; the SPH package (sph/sph_system.hpp) owns its particles
-// and is called at its own stages (forces, kick, drift, kinematics with its
-// material update); the join and the contact (coupling/) act between them.
+// step() lists its stages; each names the method it serves. The FEM package
+// (fem/fem_package.hpp) owns the nodes, elements, their material batches and
+// bars; the SPH package (sph/sph_system.hpp) owns its particles; each is called
+// at its own stages (forces, kick, drift, kinematics with its material update);
+// the join and the contact (coupling/) act between them. The solver keeps the
+// clock, the step, the energy balance, the boundaries and the couplings.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -18,8 +20,7 @@
 #include "coupling/sliding_contact.hpp"
 #include "coupling/sph_fem_join.hpp"
 #include "boundary/transmitting_boundary.hpp"
-#include "fem/embedded_bars.hpp"
-#include "fem/fem_elements.hpp"
+#include "fem/fem_package.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
 #include "output/snapshot.hpp"
@@ -98,22 +99,23 @@ class Solver {
   void visit_state(StateVisitor& visitor);
 
   // --- state, for tests and output ---
-  std::size_t node_count() const { return node_mass_.size(); }
-  const std::vector<double>& position() const { return position_; }
-  const std::vector<double>& velocity() const { return velocity_; }
+  std::size_t node_count() const { return fem_.node_count(); }
+  const std::vector<double>& position() const { return fem_.position; }
+  const std::vector<double>& velocity() const { return fem_.velocity; }
   std::vector<double>& velocity() {  // tests impose initial fields
     nodes_checked_cycle_ = -1;       // so the next step checks them
-    return velocity_;
+    return fem_.velocity;
   }
-  const std::vector<double>& displacement() const { return displacement_; }
-  const std::vector<double>& node_mass() const { return node_mass_; }
-  const FemElements<D>& elements() const { return elements_; }
-  const std::vector<MaterialPoints>& batches() const { return batches_; }
+  const std::vector<double>& displacement() const { return fem_.displacement; }
+  const std::vector<double>& node_mass() const { return fem_.node_mass; }
+  const FemElements<D>& elements() const { return fem_.elements; }
+  const std::vector<MaterialPoints>& batches() const { return fem_.batches; }
+  const FemPackage<D>& fem() const { return fem_; }
   // The SPH particles of the model (null when it has none).
   sph::SphSystem<D>* particles() { return particles_.get(); }
   const sph::SphSystem<D>* particles() const { return particles_.get(); }
-  const EmbeddedBars<D>& bars() const { return bars_; }
-  std::size_t eroded_count() const { return eroded_count_; }
+  const EmbeddedBars<D>& bars() const { return fem_.bars; }
+  std::size_t eroded_count() const { return fem_.eroded_count; }
 
  private:
   // Stages of step(), in order (the FEM, SPH and coupling parts of each stage by name).
@@ -124,8 +126,6 @@ class Solver {
   void add_static_boundary_forces();  // the transmitting boundaries' static load and its work (gravity.cpp)
   // Their static load at t = 0: under gravity, or after a relaxation (`relaxed`) (gravity.cpp).
   void hold_transmitting_boundaries(bool relaxed = false);
-  void set_geostatic_state();  // initial stress, density and compaction of geostatic parts (geostatic_state.cpp)
-  void advance_velocities();
   void kick_particles();
   void constrain_velocities();
   void drift_particles();
@@ -136,15 +136,10 @@ class Solver {
   double centred_step() const { return 0.5 * (dt_ + dt_next_); }
   void particle_kinematics();
   void element_kinematics();
-  void update_materials();
   void gather_element_state();
   void choose_time_step();
   void start_energy_and_step();  // the first step's vote and the initial energy (constructor, set_initial_velocity)
-  // Reinforced-concrete stages (solver/reinforcement_stages.cpp).
-  void setup_reinforcement();
-  void add_bar_forces();
-  void update_bars();
-  void erode_elements();
+  void erode_elements();  // FEM erosion, which the join follows (particle_stages.cpp)
 
   [[noreturn]] void fail(NumericalError error) const;
   // Numerical-failure diagnostics (solver_checks.cpp): a node or particle outside the
@@ -159,13 +154,7 @@ class Solver {
   const Model& model_;
   GeometryMode mode_;
 
-  // Nodes (SoA, n * D each).
-  std::vector<double> position_, velocity_, velocity_old_, acceleration_, force_, displacement_;
-  std::vector<double> hourglass_force_;           // N, the viscous hourglass part of force_ at t_n
-  std::vector<double> hourglass_force_previous_;  // N, the same at t_(n-1) (empty without viscous control)
-  std::vector<double> node_mass_;                 // kg (plane strain: per metre of depth)
-
-  FemElements<D> elements_;
+  FemPackage<D> fem_;  // nodes, elements, material batches, bars, erosion (fem/)
   std::unique_ptr<sph::SphSystem<D>> particles_;
   std::unique_ptr<SphFemJoin<D>>
       join_;                    // SPH-FEM join (coupling/); in place: it registers itself with particles_
@@ -178,15 +167,8 @@ class Solver {
   std::int64_t first_axis_node_ = 0, first_axis_cycle_ = -1;  // see first_axis_crossing_node()
   std::vector<char> axis_reported_;                           // per node: its crossing was reported
   int axis_reports_ = 0;
-  std::vector<MaterialPoints> batches_;  // one per Model::materials entry
   BoundaryConditions<D> boundaries_;
   TransmittingBoundary<D> transmitting_;  // Lysmer-Kuhlemeyer dashpots (coupling/)
-  HourglassControl hourglass_;
-  ViscosityControl viscosity_;
-
-  // Snapshot buffers gathered from the material batches.
-  mutable std::vector<double> element_pressure_, element_plastic_strain_, element_damage_,
-      element_temperature_;
 
   double time_ = 0.0;
   std::int64_t cycle_ = 0;
@@ -197,10 +179,6 @@ class Solver {
   // nodes while this equals cycle_: nothing writes them in between.
   std::int64_t nodes_checked_cycle_ = -1;
   std::int64_t drifted_bad_node_ = -1;  // the drift's first failed node (0-based), -1: none
-  // force_ and hourglass_force_previous_ hold zeros: the node passes zero them
-  // at their last read in a step, so add_element_forces need not fill them again
-  // (false after a restore: a checkpoint holds the forces of its last step).
-  bool node_forces_zeroed_ = false;
   bool relaxing_ = false;  // in relax(): transmitting boundaries hold their nodes still
   // In relax(): the nodes and particle materials of explosives under programmed burn, held still
   // (EquationOfState::programmed_burn).
@@ -212,15 +190,7 @@ class Solver {
   TimeStepLimit limit_;
   EnergyBalance energy_;
   EnergySplit split_;
-  double internal_energy_ = 0.0;       // J, sum m e at t_n
-  double hourglass_stored_ = 0.0;      // J, stiffness-form hourglass energy at t_n
-  double hourglass_dissipated_ = 0.0;  // J, work absorbed by the viscous form
-
-  // Reinforcement and erosion.
-  EmbeddedBars<D> bars_;
-  bool erosion_ = false;                 // some material erodes
-  std::vector<SymTensor> total_strain_;  // per element, sum D dt (geometric-strain erosion)
-  std::size_t eroded_count_ = 0;
+  double internal_energy_ = 0.0;  // J, sum m e at t_n: elements, particles and bars
 };
 
 extern template class Solver<2>;

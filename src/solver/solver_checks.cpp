@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "solver/domain_box.hpp"
+#include "model/domain_box.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -26,16 +26,16 @@ template <int D>
 std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
   if (id < 1) return {};
   const auto k = static_cast<std::size_t>(id - 1);
-  if (kind == EntityKind::element && k < elements_.size()) {
+  if (kind == EntityKind::element && k < fem_.elements.size()) {
     constexpr int N = FemElements<D>::nodes;
     double c[D] = {};
     for (int a = 0; a < N; ++a)
       for (int i = 0; i < D; ++i)
-        c[i] += position_[static_cast<std::size_t>(
-                    elements_.connectivity[k * N + static_cast<std::size_t>(a)] * D + i)] /
+        c[i] += fem_.position[static_cast<std::size_t>(
+                    fem_.elements.connectivity[k * N + static_cast<std::size_t>(a)] * D + i)] /
                 N;
     return fmt::format("material '{}', centre {}",
-                       model_.materials[static_cast<std::size_t>(elements_.material[k])].name,
+                       model_.materials[static_cast<std::size_t>(fem_.elements.material[k])].name,
                        position_text<D>(c));
   }
   if (kind == EntityKind::particle && particles_ && k < particles_->size()) {
@@ -48,8 +48,8 @@ std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
                        model_.materials[static_cast<std::size_t>(p.material[i])].name,
                        position_text<D>(p.position[i].c.data()));
   }
-  if (kind == EntityKind::node && k < node_mass_.size())
-    return fmt::format("position {}", position_text<D>(&position_[k * D]));
+  if (kind == EntityKind::node && k < fem_.node_mass.size())
+    return fmt::format("position {}", position_text<D>(&fem_.position[k * D]));
   return {};
 }
 
@@ -63,10 +63,10 @@ void Solver<D>::check_axis_crossings() {
   // reach it (docs/reliability.md). Nodes that start on the axis keep r = 0 exactly (the axis
   // condition); a node at r0 > 0 counts from the step that takes it below r = 0.
   if (D != 2 || mode_ != GeometryMode::axisymmetric) return;
-  const std::size_t nn = node_mass_.size();
+  const std::size_t nn = fem_.node_mass.size();
   if (axis_reported_.size() != nn) axis_reported_.assign(nn, 0);
   for (std::size_t n = 0; n < nn; ++n) {
-    if (!(position_[n * D] < 0.0 && displacement_[n * D] < 0.0) || axis_reported_[n]) continue;
+    if (!(fem_.position[n * D] < 0.0 && fem_.displacement[n * D] < 0.0) || axis_reported_[n]) continue;
     axis_reported_[n] = 1;
     const auto id = static_cast<std::int64_t>(n) + 1;
     if (first_axis_cycle_ < 0) first_axis_node_ = id, first_axis_cycle_ = cycle_;
@@ -75,8 +75,8 @@ void Solver<D>::check_axis_crossings() {
     fmt::print(stderr,
                "warning: node {} ({}) at cycle {}, time {:.6e} s: crossed the axis of the axisymmetric model "
                "(r = {:.6g} m; it started at r = {:.6g} m): the elements around it are inverted{}\n",
-               id, describe(EntityKind::node, id), cycle_, time_, position_[n * D],
-               position_[n * D] - displacement_[n * D],
+               id, describe(EntityKind::node, id), cycle_, time_, fem_.position[n * D],
+               fem_.position[n * D] - fem_.displacement[n * D],
                axis_reports_ == 20 ? " (no more such warnings)" : "");
   }
 }
@@ -85,8 +85,8 @@ template <int D>
 void Solver<D>::fail_node(std::int64_t bad) const {
   const RunControl& run = model_.run;
   const auto n = static_cast<std::size_t>(bad);
-  const double* x = &position_[n * D];
-  const double* v = &velocity_[n * D];
+  const double* x = &fem_.position[n * D];
+  const double* v = &fem_.velocity[n * D];
   bool finite = true;
   for (int i = 0; i < D; ++i) finite = finite && std::isfinite(x[i]) && std::isfinite(v[i]);
   if (!finite)
@@ -101,12 +101,12 @@ void Solver<D>::fail_node(std::int64_t bad) const {
 
 template <int D>
 void Solver<D>::check_nodes_and_particles() const {
-  const std::int64_t nn = static_cast<std::int64_t>(node_mass_.size());
+  const std::int64_t nn = static_cast<std::int64_t>(fem_.node_mass.size());
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
 #pragma omp parallel for schedule(static) reduction(min : bad) if (nn > 20000)
   for (std::int64_t n = 0; n < nn; ++n) {
-    const double* x = &position_[static_cast<std::size_t>(n * D)];
-    const double* v = &velocity_[static_cast<std::size_t>(n * D)];
+    const double* x = &fem_.position[static_cast<std::size_t>(n * D)];
+    const double* v = &fem_.velocity[static_cast<std::size_t>(n * D)];
     bool ok = first_outside_domain<D>(model_.run, x) < 0;
     for (int i = 0; i < D; ++i) ok = ok && std::isfinite(v[i]);
     if (!ok) bad = std::min(bad, n);

@@ -12,7 +12,7 @@ template <int D>
 void Solver<D>::visit_state(StateVisitor& v) {
   StateScope scope(v, "solver");
   nodes_checked_cycle_ = -1;    // a restored state is checked again by the next step
-  node_forces_zeroed_ = false;  // and its force arrays zeroed by add_element_forces
+  fem_.forces_zeroed = false;  // and its force arrays zeroed by add_element_forces
   visit(v, "time", time_);
   visit(v, "cycle", cycle_);
   visit(v, "dt", dt_);
@@ -38,54 +38,18 @@ void Solver<D>::visit_state(StateVisitor& v) {
   visit(v, "energy_split.sph_internal", split_.sph_internal);
   visit(v, "energy_split.bar_internal", split_.bar_internal);
   visit(v, "energy_split.gravity", split_.gravity);
-  visit(v, "eroded_count", eroded_count_);
+  visit(v, "eroded_count", fem_.eroded_count);
   visit(v, "join_power", join_power_);
   visit(v, "contact_power", contact_power_);
   visit(v, "internal_energy", internal_energy_);
-  visit(v, "hourglass_stored", hourglass_stored_);
-  visit(v, "hourglass_dissipated", hourglass_dissipated_);
+  visit(v, "hourglass_stored", fem_.hourglass_stored);
+  visit(v, "hourglass_dissipated", fem_.hourglass_dissipated);
 
-  {
-    StateScope nodes(v, "nodes");
-    visit(v, "position", position_);
-    visit(v, "velocity", velocity_);
-    visit(v, "velocity_old", velocity_old_);
-    visit(v, "acceleration", acceleration_);
-    visit(v, "force", force_);
-    visit(v, "displacement", displacement_);
-    visit(v, "hourglass_force", hourglass_force_);
-    visit(v, "hourglass_force_previous", hourglass_force_previous_);
-    visit(v, "mass", node_mass_);
-  }
-  {
-    StateScope elements(v, "elements");
-    FemElements<D>& e = elements_;
-    visit(v, "connectivity", e.connectivity);
-    visit(v, "material", e.material);
-    visit(v, "point", e.point);
-    visit(v, "mass", e.mass);
-    visit(v, "volume", e.volume);
-    visit(v, "stress", e.stress);
-    visit(v, "viscosity", e.viscosity);
-    visit(v, "density", e.density);
-    visit(v, "wave_speed", e.wave_speed);
-    visit(v, "stable_wave_speed", e.stable_wave_speed);
-    visit(v, "length", e.length);
-    visit(v, "speed", e.speed);
-    visit(v, "hourglass_displacement", e.hourglass_displacement);
-    visit(v, "eroded", e.eroded);
-    // Geometric-strain erosion sums D dt over the run (empty when no material
-    // erodes by it): without it a restarted run erodes later than the original.
-    visit(v, "total_strain", total_strain_);
-  }
-  for (std::size_t m = 0; m < batches_.size(); ++m) {
-    StateScope batch(v, "batch" + std::to_string(m));
-    camouflet::visit_state(v, batches_[m]);
-  }
+  fem_.visit_state(v);  // nodes, elements, material batches (the bars come after the particles)
   boundaries_.visit_state(v);
   transmitting_.visit_state(v);
   if (particles_) particles_->visit_state(v);
-  bars_.visit_state(v);
+  fem_.bars.visit_state(v);
   // The join's interface is a function of the eroded flags (coupling/join_erosion.cpp).
   if (join_ && v.loading()) join_->follow_erosion();
 }

@@ -105,7 +105,7 @@ long run_until(sph::SphSystem<D>& system, double t_end, double cfl, long max_cyc
 }
 
 // Steps to t_end with the variable-step leapfrog of the solver (solver.cpp,
-// advance_velocities): the kick at t_n spans the mean of the two half steps
+// FemPackage::kick): the kick at t_n spans the mean of the two half steps
 // (the first one dt/2), so the scheme stays second order while the step
 // changes from cycle to cycle; run_until() kicks with the new step and loses
 // energy to first order when the step grows fast (a point blast's first cycles).

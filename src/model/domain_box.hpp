@@ -1,7 +1,7 @@
 #pragma once
 // The domain box test of the node and particle checks, inline for
-// the node loops that apply it to every node each cycle (solver.cpp,
-// solver_checks.cpp).
+// the node loops that apply it to every node each cycle (fem/fem_package.cpp,
+// solver/solver_checks.cpp).
 #include "model/model.hpp"
 
 namespace camouflet {

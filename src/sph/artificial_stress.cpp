@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "sph/symmetric_eigen.hpp"
+
 namespace camouflet::sph {
 
 bool no_tension(const SymTensor& s) {
@@ -38,38 +40,8 @@ SymTensor rotate_tensile_part(const double values[3], const double q[3][3], doub
 }
 
 void symmetric_eigen(const SymTensor& s, double values[3], double vectors[3][3]) {
-  double a[3][3] = {{s.xx, s.xy, s.zx}, {s.xy, s.yy, s.yz}, {s.zx, s.yz, s.zz}};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) vectors[i][j] = i == j ? 1.0 : 0.0;
-  for (int sweep = 0; sweep < 30; ++sweep) {
-    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-    const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
-    if (off <= 1e-30 * diag || off == 0.0) break;
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        if (a[p][q] == 0.0) continue;
-        // Rotation that zeroes a[p][q] (Golub & Van Loan, symmetric Schur decomposition).
-        const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
-        const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
-        for (int k = 0; k < 3; ++k) {
-          const double akp = a[k][p], akq = a[k][q];
-          a[k][p] = c * akp - sn * akq;
-          a[k][q] = sn * akp + c * akq;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double apk = a[p][k], aqk = a[q][k];
-          a[p][k] = c * apk - sn * aqk;
-          a[q][k] = sn * apk + c * aqk;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double vkp = vectors[k][p], vkq = vectors[k][q];
-          vectors[k][p] = c * vkp - sn * vkq;
-          vectors[k][q] = sn * vkp + c * vkq;
-        }
-      }
-  }
-  for (int k = 0; k < 3; ++k) values[k] = a[k][k];
+  const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
+  symmetric_eigen_of(components, true, values, vectors);
 }
 
 template <>

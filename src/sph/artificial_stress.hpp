@@ -8,7 +8,8 @@
 // and R = Q R' Q^T is rotated back. The pair term m_j (R_i + R_j) f_ij^n . grad W
 // with f_ij = W(r_ij) / W(dp), dp the particle spacing, adds a short-range
 // repulsion that only acts where particles are in tension and would clump.
-// Gray et al. recommend epsilon = 0.3 and n = 4 (their section 3).
+// Gray et al. recommend epsilon = 0.3 and n = 4 (their section 3). The pair
+// term itself is in pair_terms.hpp (tensile_weight, subtract_tensile_pair).
 //
 // Here `scale` stands for 1 / rho^2 (or w / eta^2 in the planar form used for
 // axisymmetry, sph/sph_system.hpp). In 2-D only the in-plane 2x2 block enters
@@ -37,14 +38,5 @@ void artificial_stress_3d(std::span<const SymTensor> sigma, std::span<const doub
 // from the principal stresses values[k] with directions q[.][k].
 bool no_tension(const SymTensor& sigma);
 SymTensor rotate_tensile_part(const double values[3], const double q[3][3], double epsilon, double scale);
-
-// The pair weight f^n of the term above; n a small integer (4 by default) is
-// taken by repeated products, which std::pow would not give bit for bit.
-inline double tensile_weight(double f, double power, int integer_power) {
-  if (integer_power == 0) return std::pow(f, power);
-  double fn = f;
-  for (int k = 1; k < integer_power; ++k) fn *= f;
-  return fn;
-}
 
 }  // namespace camouflet::sph

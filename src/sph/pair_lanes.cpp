@@ -10,24 +10,12 @@
 #include <cmath>
 #include <span>
 
+#include "sph/pair_terms.hpp"
 #include "sph/sph_system.hpp"
 
 namespace camouflet::sph {
 
 namespace {
-
-// apply<D>(s, g) of core/sym_tensor_vec.hpp on lanes, s given by its components xx yy zz xy yz zx.
-template <int D>
-inline void apply_lanes(const Lanes s[6], const Lanes g[D], Lanes out[D]) {
-  if constexpr (D == 2) {
-    out[0] = s[0] * g[0] + s[3] * g[1];
-    out[1] = s[3] * g[0] + s[1] * g[1];
-  } else {
-    out[0] = s[0] * g[0] + s[3] * g[1] + s[5] * g[2];
-    out[1] = s[3] * g[0] + s[1] * g[1] + s[4] * g[2];
-    out[2] = s[5] * g[0] + s[4] * g[1] + s[2] * g[2];
-  }
-}
 
 // The neighbours j[0..width) of one group; lanes past the end repeat i (finite data, masked out).
 inline LaneMask fill_group(const std::uint32_t* list, std::size_t width, std::uint32_t i, std::uint32_t j[]) {
@@ -96,67 +84,43 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     const auto w = kernel_.pair_terms(r, inv_h);
     Lanes grad[D];
     for (int a = 0; a < D; ++a) grad[a] = g.dx[a] * w.gradient_factor;
-    Lanes vr = zero;
-    for (int a = 0; a < D; ++a) vr += g.dv[a] * g.dx[a];
-    // Approaching pair: Monaghan 1992, eq. (4.2).
-    const LaneMask approaching = g.inside & (vr < 0.0);
-    const Lanes mu = approaching ? g.hij * vr / (g.r2 + 0.01 * g.hij * g.hij) : zero;
     const Lanes eta_j = g.fj[P::eta];
-    const Lanes c_mean = 0.5 * (ci + g.fj[P::c]);
-    Lanes pi_ij;
+    ViscousPair<D, Lanes, LaneMask> viscous;
     if (switched) {
       Lanes alpha_j;
       for (int l = 0; l < pair_lanes; ++l) alpha_j[l] = p_.viscosity_alpha[g.j[l]];
-      const Lanes alpha = 0.5 * (p_.viscosity_alpha[i] + alpha_j);
-      const Lanes beta = beta_fixed * alpha / alpha_fixed;
-      pi_ij = (-alpha * c_mean * mu + beta * mu * mu) / (0.5 * (eta_i + eta_j));
+      const PairViscosity<Lanes> q = switched_pair_viscosity(options_, p_.viscosity_alpha[i], alpha_j);
+      viscous = viscous_pair<D>(g.inside, g.dx, g.dv, grad, g.r2, g.hij, ci, g.fj[P::c], eta_i, eta_j, q.alpha, q.beta);
     } else {
-      pi_ij = (-alpha_fixed * c_mean * mu + beta_fixed * mu * mu) / (0.5 * (eta_i + eta_j));
+      viscous = viscous_pair<D>(g.inside, g.dx, g.dv, grad, g.r2, g.hij, ci, g.fj[P::c], eta_i, eta_j, alpha_fixed,
+                                beta_fixed);
     }
+    const Lanes& mu = viscous.mu;
     mu_max = max_lanes(mu_max, -mu);
-    Lanes dissipation[D];
-    for (int a = 0; a < D; ++a) dissipation[a] = approaching ? grad[a] * pi_ij : zero;
+    Lanes* dissipation = viscous.dissipation;
     if (tensile) {
       LaneMask has;
       for (int l = 0; l < pair_lanes; ++l) has[l] = (tensile_i || has_tensile_[g.j[l]]) ? -1 : 0;
       has &= g.inside;
-      bool any = false;
-      for (int l = 0; l < pair_lanes; ++l) any |= has[l] != 0;
-      if (any) {
-        const Lanes f = w.shape * tensile_shape_inverse_;
-        Lanes fn = f;
-        if (tensile_power_integer_ == 0) {
-          for (int l = 0; l < pair_lanes; ++l) fn[l] = std::pow(f[l], options_.artificial_stress_power);
-        } else {
-          for (int k = 1; k < tensile_power_integer_; ++k) fn *= f;
-        }
-        const SymTensor& ri = p_.tensile_term[i];
-        const double ri_c[6] = {ri.xx, ri.yy, ri.zz, ri.xy, ri.yz, ri.zx};
+      if (any_of(has)) {
+        const Lanes fn = tensile_weight(w.shape * tensile_shape_inverse_, options_.artificial_stress_power,
+                                        tensile_power_integer_);
+        const auto ri = components(p_.tensile_term[i]);
         Lanes rij[6];
         for (int l = 0; l < pair_lanes; ++l) {
-          const SymTensor& rj = p_.tensile_term[g.j[l]];
-          const double rj_c[6] = {rj.xx, rj.yy, rj.zz, rj.xy, rj.yz, rj.zx};
-          for (int c = 0; c < 6; ++c) rij[c][l] = ri_c[c] + rj_c[c];
+          const auto rj = components(p_.tensile_term[g.j[l]]);
+          for (int c = 0; c < 6; ++c) rij[c][l] = ri[static_cast<std::size_t>(c)] + rj[static_cast<std::size_t>(c)];
         }
-        Lanes tension[D];
-        apply_lanes<D>(rij, grad, tension);
-        for (int a = 0; a < D; ++a) dissipation[a] = has ? dissipation[a] - tension[a] * fn : dissipation[a];
+        subtract_tensile_pair<D>(has, rij, grad, fn, dissipation);
       }
     }
-    // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j / eta_j).
     const Lanes inv_eta_j = 1.0 / eta_j;
-    Lanes pair[6];
-    for (int c = 0; c < 6; ++c) {
-      const Lanes sj = g.fj[P::stress + c];
-      pair[c] = volume_form ? fi[P::stress + c] * inv_eta_j + sj * inv_eta_i
-                            : fi[P::stress + c] * inv_eta_i + sj * inv_eta_j;
-    }
     Lanes force[D];
-    apply_lanes<D>(pair, grad, force);
+    momentum_pair<D>(g.inside, volume_form, fi + P::stress, g.fj + P::stress, inv_eta_i, inv_eta_j, grad,
+                     dissipation, force);
     const Lanes mj = g.fj[P::m];
     Lanes reaction[D];
     for (int a = 0; a < D; ++a) {
-      force[a] = g.inside ? force[a] - dissipation[a] : zero;
       acc[a] += force[a] * mj;
       reaction[a] = force[a] * mi;
     }
@@ -200,23 +164,16 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
     // Volume form V_j for i and V_i for g.j; density form m_j / eta_i and m_i / eta_j.
     const Lanes weight_i = volume_form ? mj / eta_j : mj * inv_eta_i;
     const Lanes weight_j = volume_form ? Lanes{} + volume_i : mi * (1.0 / eta_j);
-    Lanes rate = zero;
-    for (int a = 0; a < D; ++a) rate += g.dv[a] * grad[a];
-    rate_sum += weight_i * rate;
-    const Lanes rate_j = weight_j * rate;
-    Lanes wi_dv[D], wj_dv[D];
-    for (int a = 0; a < D; ++a) {
-      wi_dv[a] = weight_i * g.dv[a];
-      wj_dv[a] = weight_j * g.dv[a];
-    }
+    const KinematicPair<D, Lanes> k = kinematic_pair<D>(g.dv, grad, weight_i, weight_j);
+    rate_sum += k.rate_i;
     for (int a = 0; a < D; ++a)
-      for (int b = 0; b < D; ++b) L_sum[a][b] -= wi_dv[a] * grad[b];
+      for (int b = 0; b < D; ++b) L_sum[a][b] -= k.weighted_dv_i[a] * grad[b];
     for (std::size_t l = 0; l < g.width; ++l) {
       if (g.j[l] >= n) continue;  // ghosts and coupling points have no sums of their own
       KinematicSum& other = own[g.j[l]];
-      other.rate += rate_j[l];
+      other.rate += k.rate_j[l];
       for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) other.L[a][b] -= wj_dv[a][l] * grad[b][l];
+        for (int b = 0; b < D; ++b) other.L[a][b] -= k.weighted_dv_j[a][l] * grad[b][l];
     }
   }
   KinematicSum& mine = own[i];

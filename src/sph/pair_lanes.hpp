@@ -51,6 +51,29 @@ inline Lanes sqrt_lanes(Lanes a) {
 #endif
 }
 
+// The same names on one value (double, bool) and on lanes (Lanes, LaneMask), so that a formula
+// written once as a template on its value type runs on either with the same bits
+// (symmetric_eigen.hpp, pair_terms.hpp).
+inline bool any_of(bool m) { return m; }
+inline bool any_of(LaneMask m) {
+  bool any = false;
+  for (int l = 0; l < pair_lanes; ++l) any |= m[l] != 0;
+  return any;
+}
+inline bool and_not(bool a, bool b) { return a && !b; }
+inline LaneMask and_not(LaneMask a, LaneMask b) { return a & ~b; }
+inline double abs_of(double a) { return std::abs(a); }
+inline Lanes abs_of(Lanes a) {  // clears the sign bit, as std::abs
+  return reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(a) & std::int64_t{0x7fffffffffffffff});
+}
+inline double sqrt_of(double a) { return std::sqrt(a); }
+inline Lanes sqrt_of(Lanes a) { return sqrt_lanes(a); }
+inline double pow_of(double a, double b) { return std::pow(a, b); }
+inline Lanes pow_of(Lanes a, double b) {
+  for (int l = 0; l < pair_lanes; ++l) a[l] = std::pow(a[l], b);
+  return a;
+}
+
 // As std::max(a, b) lane by lane (a unless a < b).
 inline Lanes max_lanes(Lanes a, Lanes b) {
   return a < b ? b : a;

@@ -8,6 +8,7 @@
 
 #include "core/sym_tensor_vec.hpp"
 #include "sph/artificial_stress.hpp"
+#include "sph/pair_terms.hpp"
 #include "sph/sph_system.hpp"
 
 namespace camouflet::sph {
@@ -217,7 +218,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const auto& eta = sum_density_;  // eta_q: the pair weights (quadrature_density)
   const auto& h = p_.smoothing_length;
   const auto& inv_eta = inverse_density_;
-  const PairViscosity fixed = pair_viscosity(options_, 0.0, 0.0);
+  const PairViscosity<> fixed = pair_viscosity(options_, 0.0, 0.0);
   // One parallel region: the point factors (barrier), the rows, their sums (docs/performance.md,
   // "Fewer parallel regions").
 #pragma omp parallel
@@ -247,29 +248,28 @@ void SphSystem<D>::force_pass(bool write_rates) {
         const double r = std::sqrt(r2);
         const auto w = kernel_.pair_terms(r, inv_h);
         const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
-        const Vec<D> dv = v[i] - v[j];
-        const double vr = dot(dv, dx);
-        Vec<D> dissipation{};
-        double mu = 0.0;
-        if (vr < 0.0) {  // approaching pair: Monaghan 1992, eq. (4.2)
-          mu = hij * vr / (r2 + 0.01 * hij * hij);
-          const double c_mean = 0.5 * (p_.wave_speed[i] + p_.wave_speed[j]);
-          const PairViscosity q =
-              switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
-          const double pi_ij = (-q.alpha * c_mean * mu + q.beta * mu * mu) / (0.5 * (eta[i] + eta[j]));
-          mu_max = std::max(mu_max, -mu);
-          dissipation = grad * pi_ij;
-        }
+        // The pair terms on one pair (pair_terms.hpp), the source the SIMD rows run too.
+        double dx_a[D], dv_a[D], grad_a[D];
+        for (int a = 0; a < D; ++a) dx_a[a] = dx[a], dv_a[a] = v[i][a] - v[j][a], grad_a[a] = grad[a];
+        const PairViscosity<> q =
+            switched ? pair_viscosity(options_, p_.viscosity_alpha[i], p_.viscosity_alpha[j]) : fixed;
+        ViscousPair<D, double, bool> viscous = viscous_pair<D>(true, dx_a, dv_a, grad_a, r2, hij, p_.wave_speed[i],
+                                                               p_.wave_speed[j], eta[i], eta[j], q.alpha, q.beta);
+        const double mu = viscous.mu;
+        if (viscous.approaching) mu_max = std::max(mu_max, -mu);
         if (tensile && (has_tensile_[i] | has_tensile_[j])) {
           const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
-          dissipation -= apply<D>(p_.tensile_term[i] + p_.tensile_term[j], grad) * fn;
+          const auto r_sum = components(p_.tensile_term[i] + p_.tensile_term[j]);
+          subtract_tensile_pair<D>(true, r_sum.data(), grad_a, fn, viscous.dissipation);
         }
-        pair_dissipation_[base + e] = dissipation;
-        // S = sigma / rho: volume form (S_i / eta_j + S_j / eta_i), density form (S_i / eta_i + S_j /
-        // eta_j).
-        const SymTensor pair = volume_form ? p_.stress_term[i] * inv_eta[j] + p_.stress_term[j] * inv_eta[i]
-                                           : p_.stress_term[i] * inv_eta[i] + p_.stress_term[j] * inv_eta[j];
-        const Vec<D> force = apply<D>(pair, grad) - dissipation;
+        Vec<D>& dissipation = pair_dissipation_[base + e];
+        for (int a = 0; a < D; ++a) dissipation[a] = viscous.dissipation[a];
+        const auto s_i = components(p_.stress_term[i]), s_j = components(p_.stress_term[j]);
+        double force_a[D];
+        momentum_pair<D>(true, volume_form, s_i.data(), s_j.data(), inv_eta[i], inv_eta[j], grad_a,
+                         viscous.dissipation, force_a);
+        Vec<D> force;
+        for (int a = 0; a < D; ++a) force[a] = force_a[a];
         acc += force * m[j];
         ++count;
         if (j < n) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/sym_tensor_vec.hpp"
+#include "sph/pair_terms.hpp"
 #include "sph/sph_system.hpp"
 
 namespace camouflet::sph {
@@ -184,16 +185,20 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
     const Vec<D> dv = v[i] - v[j];
     const double weight_i = volume_form ? volume[j] : m[j] * inv_eta[i];
     const double weight_j = volume_form ? volume[i] : m[i] * inv_eta[j];
-    const double rate = dot(dv, pair_gradient(i, j, grad));
+    // The pair terms on one pair (pair_terms.hpp), the source the SIMD rows run too.
+    const Vec<D> pair_grad = pair_gradient(i, j, grad);
+    double dv_a[D], pair_grad_a[D];
+    for (int a = 0; a < D; ++a) dv_a[a] = dv[a], pair_grad_a[a] = pair_grad[a];
+    const KinematicPair<D, double> k = kinematic_pair<D>(dv_a, pair_grad_a, weight_i, weight_j);
     const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
-    mine.rate += weight_i * rate;
+    mine.rate += k.rate_i;
     for (int a = 0; a < D; ++a)
-      for (int b = 0; b < D; ++b) mine.L[a][b] -= weight_i * dv[a] * b_grad_i[b];
+      for (int b = 0; b < D; ++b) mine.L[a][b] -= k.weighted_dv_i[a] * b_grad_i[b];
     if (j < n) {
       const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
-      own[j].rate += weight_j * rate;
+      own[j].rate += k.rate_j;
       for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) own[j].L[a][b] -= weight_j * dv[a] * b_grad_j[b];
+        for (int b = 0; b < D; ++b) own[j].L[a][b] -= k.weighted_dv_j[a] * b_grad_j[b];
     }
   }
   own[i].rate += mine.rate;

@@ -8,6 +8,7 @@
 
 #include "core/sym_tensor_vec.hpp"
 #include "sph/artificial_stress.hpp"
+#include "sph/pair_terms.hpp"
 #include "sph/sph_system.hpp"
 
 namespace camouflet::sph {

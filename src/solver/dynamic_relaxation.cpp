@@ -16,6 +16,9 @@ template <int D>
 typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxation& relaxation,
                                                 const std::function<void(const Relaxation&)>& after_cycle) {
   if (cycle_ != 0) throw std::logic_error("relax: before the first step");
+  if (!packages_.empty())
+    throw std::logic_error("relax: a registered package (" + packages_.front()->name() +
+                           ") would not be damped; register it after the relaxation");
   // Mass-proportional damping dv/dt = -c v at c = 2 omega_1 = 4 pi / T: critical for the
   // fundamental mode, which then settles within about a period; the higher modes ring down at
   // the same rate. Applied as v <- v exp(-c dt) after each step, exact for the damping alone.

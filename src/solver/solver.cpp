@@ -74,6 +74,7 @@ void Solver<D>::start_energy_and_step() {
       kinetic += 0.5 * fem_.node_mass[n] * fem_.velocity[n * D + static_cast<std::size_t>(i)] *
                  fem_.velocity[n * D + static_cast<std::size_t>(i)];
   if (particles_) kinetic += particles_->kinetic_energy();
+  for (const auto& package : packages_) kinetic += package->kinetic_energy();
   energy_.kinetic = kinetic;
   energy_.internal = internal_energy_;
   // The stiffness-form hourglass energy is nought at t = 0 unless a relaxation stored some.
@@ -96,24 +97,29 @@ void Solver<D>::step() {
     add_particle_forces();         // SPH: the particle sums, accelerations (sph/)
     add_coupling_forces();         // the join's reactions and the sliding contact (coupling/)
     add_gravity();                 // m g on nodes and particles (gravity.cpp)
+    add_package_forces();          // registered packages: their forces, gravity's work on them
     add_static_boundary_forces();  // the transmitting boundaries' static hold (gravity.cpp)
     fem_.add_bar_forces();         // embedded reinforcement bars onto their host nodes
     // Velocities at t_(n+1/2).
     fem_.kick(centred_step());  // FEM: a = F / m, v(n+1/2) by the central difference
     kick_particles();        // SPH: v(n+1/2), the pair heating
+    kick_packages();         // registered packages: v(n+1/2), their own constraints
     constrain_velocities();  // dashpots, fixed, prescribed, symmetry, axis; the join settles
     // Energies at t_n and positions at t_(n+1).
     drift_particles();                 // SPH: centred kinetic energy, x(n+1)
+    drift_packages();                  // registered packages: the same
     drift_nodes_and_account_energy();  // FEM: x(n+1) = x(n) + v(n+1/2) dt; the energy balance at t_n
     advance_clock();                   // t_(n+1), the cycle count, dt(n+1/2)
     check_drifted_nodes();             // finite and inside the domain box (found by the drift's pass)
     check_particles();                 // the particles' half of check_nodes_and_particles (solver_checks.cpp)
+    check_packages();                  // registered packages: every point sound
     check_axis_crossings();            // r-z: a node across the axis is reported (a warning)
     // Kinematics and material state at t_(n+1).
     particle_kinematics();   // SPH: eta, rho, h, D, W and their material update (sph/)
     element_kinematics();    // FEM: V, rho at t_(n+1); D, W, q at mid-step
     fem_.update_materials({dt_, time_});  // FEM: EOS + strength + damage, one call per material batch
     fem_.update_bars(dt_, time_);         // embedded bars: uniaxial-stress material update
+    update_packages();                    // registered packages: their state at t_(n+1)
     erode_elements();        // elements past their material's erosion threshold (the join follows)
     gather_element_state();  // sigma = s - p I, wave speeds, internal energy, dt vote
     choose_time_step();      // dt(n+3/2) = CFL min l / (c + |v|), growth limited
@@ -173,6 +179,7 @@ void Solver<D>::drift_nodes_and_account_energy() {
   const typename FemPackage<D>::Drift drift = fem_.drift(dt_, centred_step(), dt_next_);
   EnergyBalance& e = energy_;
   e.kinetic = drift.kinetic + split_.sph_kinetic;
+  if (!packages_.empty()) e.kinetic += package_kinetic_;
   e.internal = internal_energy_;
   e.hourglass = fem_.hourglass_energy();
   const double total = e.kinetic + e.internal + e.hourglass + e.eroded;
@@ -226,6 +233,7 @@ void Solver<D>::gather_element_state() {
   split_.sph_internal = particles_ ? particles_->internal_energy() : 0.0;
   split_.bar_internal = fem_.bars.internal_energy();
   internal_energy_ = state.internal + split_.sph_internal + split_.bar_internal;
+  if (!packages_.empty()) internal_energy_ += package_internal_energy();
   if (state.bad_element >= 0) {
     const std::int64_t bad = state.bad_element;
     const std::size_t e = static_cast<std::size_t>(bad);
@@ -266,6 +274,7 @@ void Solver<D>::choose_time_step() {
       reason = fmt::format("bar '{}' segment {}: L/c", fem_.bars.set_name(s), s + 1);
     }
   }
+  vote_packages(dt, reason);
   // Hold the step while the limit sits within 2 % above it: a step that
   // follows |v| every cycle pumps energy in or out of a vibration (the
   // central difference conserves energy only between changes of dt).
@@ -279,7 +288,7 @@ void Solver<D>::choose_time_step() {
     reason = "max_dt";
   }
   if (!(dt > run.min_dt) || !std::isfinite(dt)) {
-    if (best_e >= 0 && (!particles_ || reason.rfind("element", 0) == 0))
+    if (best_e >= 0 && ((!particles_ && packages_.empty()) || reason.rfind("element", 0) == 0))
       fail(NumericalError(
           EntityKind::element, best_e + 1, "time step",
           fmt::format("dt {:.6g} s is below min_dt {:.6g} s (l = {:.6g} m, c = {:.6g} m/s, |v| = {:.6g} m/s)",

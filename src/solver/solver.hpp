@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "boundary/boundary_conditions.hpp"
+#include "core/package.hpp"
 #include "core/state_visitor.hpp"
 #include "coupling/sliding_contact.hpp"
 #include "coupling/sph_fem_join.hpp"
@@ -63,6 +64,14 @@ class Solver {
   // `after_cycle`, if given, sees the relaxation so far after every cycle (progress lines).
   Relaxation relax(const RunControl::DynamicRelaxation& relaxation,
                    const std::function<void(const Relaxation&)>& after_cycle = {});
+
+  // Before the first step: a further method, run beside FEM and SPH at every stage of step()
+  // (core/package.hpp; solver/package_stages.cpp): its forces with gravity's work on it, kick,
+  // drift with its kinetic energy in the balance, state update, internal energy, vote for the
+  // step, checks and checkpoint scope "package.<name>". A dynamic relaxation does not damp a
+  // registered package: relax() refuses to run with one. Throws std::logic_error after the
+  // first step or for a name already registered.
+  void add_package(std::unique_ptr<Package<D>> package);
 
   // Caps the next time step (the driver uses it to land on the end time).
   void limit_next_step(double dt_max);
@@ -140,6 +149,14 @@ class Solver {
   void choose_time_step();
   void start_energy_and_step();  // the first step's vote and the initial energy (constructor, set_initial_velocity)
   void erode_elements();  // FEM erosion, which the join follows (particle_stages.cpp)
+  // The registered packages' parts of the stages (package_stages.cpp).
+  void add_package_forces();
+  void kick_packages();
+  void drift_packages();
+  void update_packages();
+  void check_packages() const;
+  double package_internal_energy() const;
+  void vote_packages(double& dt, std::string& reason) const;
 
   [[noreturn]] void fail(NumericalError error) const;
   // Numerical-failure diagnostics (solver_checks.cpp): a node or particle outside the
@@ -159,6 +176,8 @@ class Solver {
   std::unique_ptr<SphFemJoin<D>>
       join_;                    // SPH-FEM join (coupling/); in place: it registers itself with particles_
   double join_power_ = 0.0;     // W, pair work across the join that no internal energy books
+  std::vector<std::unique_ptr<Package<D>>> packages_;  // registered with add_package
+  double package_kinetic_ = 0.0;  // J, the registered packages' centred kinetic energy at t_n
   SlidingContact<D> contact_;   // particles against FEM faces (coupling/)
   double contact_power_ = 0.0;  // W, power of the contact forces
   std::int64_t first_tangled_element_ = 0, first_tangled_cycle_ = -1;  // see first_tangled_element()

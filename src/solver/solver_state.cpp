@@ -50,6 +50,10 @@ void Solver<D>::visit_state(StateVisitor& v) {
   transmitting_.visit_state(v);
   if (particles_) particles_->visit_state(v);
   fem_.bars.visit_state(v);
+  for (const auto& package : packages_) {
+    StateScope package_scope(v, "package." + package->name());
+    package->visit_state(v);
+  }
   // The join's interface is a function of the eroded flags (coupling/join_erosion.cpp).
   if (join_ && v.loading()) join_->follow_erosion();
 }

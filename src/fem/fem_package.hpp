@@ -16,7 +16,7 @@
 #include "materials/material.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
-#include "output/snapshot.hpp"
+#include "model/snapshot.hpp"
 
 namespace camouflet {
 

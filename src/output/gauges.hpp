@@ -33,7 +33,7 @@
 
 #include "model/isoparametric.hpp"
 #include "model/model.hpp"
-#include "output/snapshot.hpp"
+#include "model/snapshot.hpp"
 
 namespace camouflet {
 

@@ -8,7 +8,7 @@
 #include "core/state_visitor.hpp"
 #include "model/run_options.hpp"
 #include "model/run_summary.hpp"
-#include "output/snapshot.hpp"
+#include "model/snapshot.hpp"
 
 namespace camouflet {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "output/snapshot.hpp"
+#include "model/snapshot.hpp"
 
 namespace camouflet {
 

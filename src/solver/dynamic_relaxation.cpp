@@ -16,9 +16,10 @@ template <int D>
 typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxation& relaxation,
                                                 const std::function<void(const Relaxation&)>& after_cycle) {
   if (cycle_ != 0) throw std::logic_error("relax: before the first step");
-  if (!packages_.empty())
-    throw std::logic_error("relax: a registered package (" + packages_.front()->name() +
-                           ") would not be damped; register it after the relaxation");
+  for (const auto& package : packages_)
+    if (!package->relaxes())
+      throw std::logic_error("relax: the package '" + package->name() +
+                             "' is not damped by a relaxation; register it after the relaxation");
   // Mass-proportional damping dv/dt = -c v at c = 2 omega_1 = 4 pi / T: critical for the
   // fundamental mode, which then settles within about a period; the higher modes ring down at
   // the same rate. Applied as v <- v exp(-c dt) after each step, exact for the damping alone.
@@ -47,7 +48,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
     r.time += dt_;
     const double factor = std::exp(-rate * dt_);
     for (double& v : fem_.velocity) v *= factor;
-    if (particles_) particles_->scale_velocities(factor);
+    for (const auto& package : packages_) package->scale_velocities(factor);
     const double kinetic = energy_.kinetic;  // at t_n of this cycle, before its damping
     r.peak_kinetic = std::max(r.peak_kinetic, kinetic);
     r.kinetic_ratio = r.peak_kinetic > 0.0 ? kinetic / r.peak_kinetic : 0.0;
@@ -78,13 +79,15 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
   // from here.
   for (auto* field : {&fem_.velocity, &fem_.velocity_old, &fem_.acceleration, &fem_.displacement})
     std::fill(field->begin(), field->end(), 0.0);
-  if (particles_) particles_->come_to_rest();
+  for (const auto& package : packages_) package->come_to_rest();
   time_ = 0.0;
   cycle_ = 0;
   dt_ = 0.0;
   nodes_checked_cycle_ = -1;
   energy_ = EnergyBalance{};
-  split_ = EnergySplit{};
+  EnergySplit fresh;
+  for (const auto& share : split_.packages) fresh.packages.push_back({share.name});
+  split_ = fresh;
   fem_.hourglass_dissipated = 0.0;
   fem_.elements.set_speeds(fem_.velocity.data());
   gather_element_state();
@@ -99,9 +102,7 @@ template <int D>
 void Solver<D>::hold_charges_still() {
   for (const std::int64_t n : relaxation_held_nodes_)
     for (int i = 0; i < D; ++i) fem_.velocity[static_cast<std::size_t>(n * D + i)] = 0.0;
-  if (particles_ && std::any_of(relaxation_held_materials_.begin(), relaxation_held_materials_.end(),
-                                [](char c) { return c; }))
-    particles_->hold_still(relaxation_held_materials_);
+  for (const auto& package : packages_) package->hold_still(relaxation_held_materials_);
 }
 
 template void Solver<2>::hold_charges_still();

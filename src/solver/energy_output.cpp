@@ -43,8 +43,11 @@ void EnergyCsv<D>::after_cycle(const Solver<D>& solver) {
   const EnergyBalance& e = solver.energy();
   const typename Solver<D>::EnergySplit& s = solver.energy_split();
   const double residual = e.kinetic + e.internal + e.hourglass + e.eroded - e.initial_total - e.boundary_work;
+  double sph_kinetic = 0.0, sph_internal = 0.0;  // the particle package's share
+  for (const auto& share : s.packages)
+    if (share.name == "sph") sph_kinetic = share.kinetic, sph_internal = share.internal;
   row_.assign({e.kinetic, e.internal, e.hourglass, e.eroded, e.viscous, e.boundary_work, s.transmitting,
-               s.constraints, s.join, s.join_face, s.contact, s.sph_kinetic, s.sph_internal, s.bar_internal,
+               s.constraints, s.join, s.join_face, s.contact, sph_kinetic, sph_internal, s.bar_internal,
                s.gravity, residual, e.relative_error});
   csv_->write_row(time, row_);
 }

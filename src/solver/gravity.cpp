@@ -1,4 +1,4 @@
-// Gravity: the body force m g on every node and particle, and the static load that transmitting
+// Gravity: the body force m g on every node and every package's points, and the static load that transmitting
 // boundaries carry under it or after a dynamic relaxation (docs/theory/gravity.md).
 #include <cstddef>
 #include <cstdint>
@@ -26,14 +26,7 @@ void Solver<D>::add_gravity() {
       power += m * g[static_cast<std::size_t>(i)] * fem_.velocity[k];
     }
   }
-  if (particles_) {
-    sph::ParticleArrays<D>& p = particles_->particles();
-    for (std::size_t k = 0; k < p.real; ++k)
-      for (int i = 0; i < D; ++i) {
-        p.acceleration[k][i] += g[static_cast<std::size_t>(i)];
-        power += p.mass[k] * g[static_cast<std::size_t>(i)] * p.velocity[k][i];
-      }
-  }
+  add_package_gravity(g, power);  // the particles' and any other package's points, into the same sum
   const double work = power * dt_;
   energy_.boundary_work += work;
   split_.gravity += work;

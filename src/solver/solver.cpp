@@ -17,27 +17,17 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode), fe
   boundaries_.constrain(fem_.velocity.data(), 0.0);
   transmitting_ = TransmittingBoundary<D>(model, fem_.elements);
 
-  // SPH particles: same materials, own batches (sph/sph_system.hpp); symmetry
+  // SPH particles: same materials, own batches (sph/sph_package.hpp); symmetry
   // boundaries on axis-aligned planes reflect particles too.
   if (model.particles.count() > 0) {
-    const sph::SphOptions& options = model.sph;
-    if (mode_ == GeometryMode::axisymmetric && !options.volume_form)
-      fmt::print(stderr,
-                 "warning: [sph] volume_form = false in r-z: the particle columns next to the axis feel a "
-                 "stress divergence up to ~1.4x too large (mirror images with |r| ring weights; "
-                 "docs/theory/sph.md, \"The first columns\")\n");
-    particles_ = std::make_unique<sph::SphSystem<D>>(model, options, sph::symmetry_mirror_planes(model));
-    if (!model.joins.empty()) {
-      // The same planes as the particles' mirrors, axis first (SphSystem's order).
-      std::vector<sph::MirrorPlane> planes = sph::symmetry_mirror_planes(model);
-      if (mode_ == GeometryMode::axisymmetric)
-        planes.insert(planes.begin(), sph::MirrorPlane{0, 0.0, sph::PlaneKind::axis});
-      join_ = std::make_unique<SphFemJoin<D>>(model, fem_.elements, fem_.position.data(), fem_.velocity.data(),
-                                              *particles_, std::move(planes));
-    }
-    particles_->compute_accelerations();
+    auto particles = std::make_unique<sph::SphPackage<D>>(model);
+    coupling_ = std::make_unique<SphFemCoupling<D>>(model, fem_, *particles);
+    particles->add_forces(0.0);
+    sph_ = particles.get();
+    register_package(std::move(particles));
+  } else {
+    SlidingContact<D> contact(model);  // refuses contacts of a model without particles, naming them
   }
-  contact_ = SlidingContact<D>(model);
 
   // The first step votes with the initial velocities like every later one
   // (the kinematics that measure |v| have not run yet).
@@ -73,8 +63,7 @@ void Solver<D>::start_energy_and_step() {
     for (int i = 0; i < D; ++i)
       kinetic += 0.5 * fem_.node_mass[n] * fem_.velocity[n * D + static_cast<std::size_t>(i)] *
                  fem_.velocity[n * D + static_cast<std::size_t>(i)];
-  if (particles_) kinetic += particles_->kinetic_energy();
-  for (const auto& package : packages_) kinetic += package->kinetic_energy();
+  kinetic += package_kinetic_energy();
   energy_.kinetic = kinetic;
   energy_.internal = internal_energy_;
   // The stiffness-form hourglass energy is nought at t = 0 unless a relaxation stored some.
@@ -91,35 +80,30 @@ void Solver<D>::step() {
   try {
     // The state at t_n: a NaN is named before forces spread it. FEM-only
     // models skip the nodes that the previous step's node pass checked.
-    if (particles_ || !fem_.bars.empty() || nodes_checked_cycle_ != cycle_) check_nodes_and_particles();
+    if (!packages_.empty() || !fem_.bars.empty() || nodes_checked_cycle_ != cycle_) check_nodes_and_packages();
     // Forces at t_n.
     add_element_forces();          // FEM: face loads, element stresses and hourglass control (fem/)
-    add_particle_forces();         // SPH: the particle sums, accelerations (sph/)
+    add_package_forces();          // packages: SPH's particle sums and accelerations (sph/), the others'
     add_coupling_forces();         // the join's reactions and the sliding contact (coupling/)
-    add_gravity();                 // m g on nodes and particles (gravity.cpp)
-    add_package_forces();          // registered packages: their forces, gravity's work on them
+    add_gravity();                 // m g on nodes and on every package's points, its work (gravity.cpp)
     add_static_boundary_forces();  // the transmitting boundaries' static hold (gravity.cpp)
     fem_.add_bar_forces();         // embedded reinforcement bars onto their host nodes
     // Velocities at t_(n+1/2).
     fem_.kick(centred_step());  // FEM: a = F / m, v(n+1/2) by the central difference
-    kick_particles();        // SPH: v(n+1/2), the pair heating
-    kick_packages();         // registered packages: v(n+1/2), their own constraints
-    constrain_velocities();  // dashpots, fixed, prescribed, symmetry, axis; the join settles
+    kick_packages();            // packages: v(n+1/2) (SPH: the pair heating), their own constraints
+    constrain_velocities();     // dashpots, fixed, prescribed, symmetry, axis; the join settles
     // Energies at t_n and positions at t_(n+1).
-    drift_particles();                 // SPH: centred kinetic energy, x(n+1)
-    drift_packages();                  // registered packages: the same
+    drift_packages();                  // packages: centred kinetic energy, x(n+1)
     drift_nodes_and_account_energy();  // FEM: x(n+1) = x(n) + v(n+1/2) dt; the energy balance at t_n
     advance_clock();                   // t_(n+1), the cycle count, dt(n+1/2)
     check_drifted_nodes();             // finite and inside the domain box (found by the drift's pass)
-    check_particles();                 // the particles' half of check_nodes_and_particles (solver_checks.cpp)
-    check_packages();                  // registered packages: every point sound
+    check_packages();                  // packages: every point sound (SPH: finite, inside the box)
     check_axis_crossings();            // r-z: a node across the axis is reported (a warning)
     // Kinematics and material state at t_(n+1).
-    particle_kinematics();   // SPH: eta, rho, h, D, W and their material update (sph/)
+    update_packages();       // packages (SPH: eta, rho, h, D, W, material update), before the elements'
     element_kinematics();    // FEM: V, rho at t_(n+1); D, W, q at mid-step
     fem_.update_materials({dt_, time_});  // FEM: EOS + strength + damage, one call per material batch
     fem_.update_bars(dt_, time_);         // embedded bars: uniaxial-stress material update
-    update_packages();                    // registered packages: their state at t_(n+1)
     erode_elements();        // elements past their material's erosion threshold (the join follows)
     gather_element_state();  // sigma = s - p I, wave speeds, internal energy, dt vote
     choose_time_step();      // dt(n+3/2) = CFL min l / (c + |v|), growth limited
@@ -161,24 +145,23 @@ void Solver<D>::constrain_velocities() {
   const double constraint_work = reaction_work + boundaries_.load_work(fem_.velocity_old.data(), dt_);
   energy_.boundary_work += constraint_work;
   split_.constraints += constraint_work;
-  if (join_) {  // the elements' half of the viscous heating, and the join work (coupling/sph_fem_join.hpp)
-    const double work = join_->settle(*particles_, dt_mean, fem_.batches);
-    join_power_ = dt_mean > 0.0 ? work / dt_mean : 0.0;
-    split_.join_face += join_->face_offset_work();
+  if (coupling_) {  // the join settles; its work and the contact's (coupling/sph_fem_coupling.hpp)
+    const typename SphFemCoupling<D>::Powers powers = coupling_->settle(dt_mean);
+    split_.join_face += powers.join_face_work;
+    energy_.boundary_work += (powers.join + powers.contact) * dt_mean;
+    split_.join += powers.join * dt_mean;
+    split_.contact += powers.contact * dt_mean;
   }
-  energy_.boundary_work += (join_power_ + contact_power_) * dt_mean;  // join and contact work (coupling/)
-  split_.join += join_power_ * dt_mean;
-  split_.contact += contact_power_ * dt_mean;
 }
 
 template <int D>
 void Solver<D>::drift_nodes_and_account_energy() {
   // The nodes' pass (FemPackage::drift) gives their centred kinetic energy at t_n; the
-  // particles' was taken in drift_particles. check_drifted_nodes reports a failed node once the
+  // packages' was taken in drift_packages. check_drifted_nodes reports a failed node once the
   // clock has moved on.
   const typename FemPackage<D>::Drift drift = fem_.drift(dt_, centred_step(), dt_next_);
   EnergyBalance& e = energy_;
-  e.kinetic = drift.kinetic + split_.sph_kinetic;
+  e.kinetic = drift.kinetic;
   if (!packages_.empty()) e.kinetic += package_kinetic_;
   e.internal = internal_energy_;
   e.hourglass = fem_.hourglass_energy();
@@ -230,10 +213,10 @@ void Solver<D>::element_kinematics() {
 template <int D>
 void Solver<D>::gather_element_state() {
   const typename FemPackage<D>::State state = fem_.gather_state();
-  split_.sph_internal = particles_ ? particles_->internal_energy() : 0.0;
+  // Elements, packages, bars: the packages' sum is SPH's own share when it is the only one.
+  const double packages = package_internal_energy();
   split_.bar_internal = fem_.bars.internal_energy();
-  internal_energy_ = state.internal + split_.sph_internal + split_.bar_internal;
-  if (!packages_.empty()) internal_energy_ += package_internal_energy();
+  internal_energy_ = state.internal + packages + split_.bar_internal;
   if (state.bad_element >= 0) {
     const std::int64_t bad = state.bad_element;
     const std::size_t e = static_cast<std::size_t>(bad);
@@ -259,13 +242,7 @@ void Solver<D>::choose_time_step() {
     const auto m = static_cast<std::size_t>(fem_.elements.material[static_cast<std::size_t>(best_e)]);
     reason = fmt::format("element {} ({}): l/(c+|v|)", best_e + 1, model_.materials[m].name);
   }
-  if (particles_) {
-    const TimeStepLimit particle_vote = particles_->stable_time_step();
-    if (run.cfl * particle_vote.dt < dt) {
-      dt = run.cfl * particle_vote.dt;
-      reason = particle_vote.reason;
-    }
-  }
+  vote_packages(dt, reason);
   if (!fem_.bars.empty()) {
     std::size_t s = 0;
     const double t = fem_.bars.stable_time_step(fem_.position.data(), s);
@@ -274,7 +251,6 @@ void Solver<D>::choose_time_step() {
       reason = fmt::format("bar '{}' segment {}: L/c", fem_.bars.set_name(s), s + 1);
     }
   }
-  vote_packages(dt, reason);
   // Hold the step while the limit sits within 2 % above it: a step that
   // follows |v| every cycle pumps energy in or out of a vibration (the
   // central difference conserves energy only between changes of dt).
@@ -288,7 +264,7 @@ void Solver<D>::choose_time_step() {
     reason = "max_dt";
   }
   if (!(dt > run.min_dt) || !std::isfinite(dt)) {
-    if (best_e >= 0 && ((!particles_ && packages_.empty()) || reason.rfind("element", 0) == 0))
+    if (best_e >= 0 && (packages_.empty() || reason.rfind("element", 0) == 0))
       fail(NumericalError(
           EntityKind::element, best_e + 1, "time step",
           fmt::format("dt {:.6g} s is below min_dt {:.6g} s (l = {:.6g} m, c = {:.6g} m/s, |v| = {:.6g} m/s)",
@@ -309,7 +285,7 @@ FieldSnapshot Solver<D>::snapshot() const {
   s.time = time_;
   s.cycle = cycle_;
   fem_.fill_snapshot(s);
-  if (particles_) particles_->fill_snapshot(s);
+  for (const auto& package : packages_) package->fill_snapshot(s);
   return s;
 }
 

@@ -3,12 +3,13 @@
 // over FEM elements and SPH particles, driven one step at a time. run_model()
 // drives it to the end time with output; tests drive it cycle by cycle.
 //
-// step() lists its stages; each names the method it serves. The FEM package
-// (fem/fem_package.hpp) owns the nodes, elements, their material batches and
-// bars; the SPH package (sph/sph_system.hpp) owns its particles; each is called
-// at its own stages (forces, kick, drift, kinematics with its material update);
-// the join and the contact (coupling/) act between them. The solver keeps the
-// clock, the step, the energy balance, the boundaries and the couplings.
+// step() lists its stages. The FEM package (fem/fem_package.hpp) owns the
+// nodes, elements, their material batches and bars, and is called by name at
+// its stages; every other method is a Package<D> (model/package.hpp) in
+// packages_, the SPH particles (sph/sph_package.hpp) first, and each stage
+// loops over them. The join and the contact (coupling/) act between FEM and
+// SPH. The solver keeps the clock, the step, the energy balance, the
+// boundaries and the couplings.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -16,17 +17,15 @@
 #include <vector>
 
 #include "boundary/boundary_conditions.hpp"
-#include "core/package.hpp"
 #include "core/state_visitor.hpp"
-#include "coupling/sliding_contact.hpp"
-#include "coupling/sph_fem_join.hpp"
+#include "coupling/sph_fem_coupling.hpp"
 #include "boundary/transmitting_boundary.hpp"
 #include "fem/fem_package.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
-#include "output/snapshot.hpp"
 #include "solver/run.hpp"
-#include "sph/sph_system.hpp"
+#include "model/package.hpp"
+#include "sph/sph_package.hpp"
 
 namespace camouflet {
 
@@ -65,12 +64,12 @@ class Solver {
   Relaxation relax(const RunControl::DynamicRelaxation& relaxation,
                    const std::function<void(const Relaxation&)>& after_cycle = {});
 
-  // Before the first step: a further method, run beside FEM and SPH at every stage of step()
-  // (core/package.hpp; solver/package_stages.cpp): its forces with gravity's work on it, kick,
+  // Before the first step: a further method, run after FEM and SPH at every stage of step()
+  // (model/package.hpp; solver/package_stages.cpp): its forces, gravity with its work, kick,
   // drift with its kinetic energy in the balance, state update, internal energy, vote for the
-  // step, checks and checkpoint scope "package.<name>". A dynamic relaxation does not damp a
-  // registered package: relax() refuses to run with one. Throws std::logic_error after the
-  // first step or for a name already registered.
+  // step, checks and checkpoint state. relax() refuses to run with a package that is not
+  // damped (Package::relaxes). Throws std::logic_error after the first step or for a name
+  // already registered.
   void add_package(std::unique_ptr<Package<D>> package);
 
   // Caps the next time step (the driver uses it to land on the end time).
@@ -97,8 +96,13 @@ class Solver {
     double join = 0.0;          // J, SPH-FEM join work booked by no internal energy (docs/theory/coupling.md)
     double join_face = 0.0;     // J, the part of `join` done through the coupling points' centre-face offset
     double contact = 0.0;       // J, particle-face contact work
-    double sph_kinetic = 0.0;   // J, part of EnergyBalance::kinetic held by particles
-    double sph_internal = 0.0;  // J, part of EnergyBalance::internal held by particles
+    // J, the parts of EnergyBalance::kinetic and ::internal each package holds, in packages_'
+    // order (energy.csv's sph_kinetic and sph_internal are the share named "sph").
+    struct Share {
+      std::string name;
+      double kinetic = 0.0, internal = 0.0;
+    };
+    std::vector<Share> packages;
     double bar_internal = 0.0;  // J, part of EnergyBalance::internal held by embedded bars
     double gravity = 0.0;       // J, work of gravity (the potential energy given up; solver/gravity.cpp)
   };
@@ -121,49 +125,50 @@ class Solver {
   const std::vector<MaterialPoints>& batches() const { return fem_.batches; }
   const FemPackage<D>& fem() const { return fem_; }
   // The SPH particles of the model (null when it has none).
-  sph::SphSystem<D>* particles() { return particles_.get(); }
-  const sph::SphSystem<D>* particles() const { return particles_.get(); }
+  sph::SphSystem<D>* particles() { return sph_ ? &sph_->system() : nullptr; }
+  const sph::SphSystem<D>* particles() const { return sph_ ? &sph_->system() : nullptr; }
   const EmbeddedBars<D>& bars() const { return fem_.bars; }
   std::size_t eroded_count() const { return fem_.eroded_count; }
 
  private:
-  // Stages of step(), in order (the FEM, SPH and coupling parts of each stage by name).
+  // Stages of step(), in order (the FEM and coupling parts of each stage by name, the
+  // packages' in package_stages.cpp).
   void add_element_forces();
-  void add_particle_forces();
   void add_coupling_forces();
   void add_gravity();  // the body force m g and its work (solver/gravity.cpp)
   void add_static_boundary_forces();  // the transmitting boundaries' static load and its work (gravity.cpp)
   // Their static load at t = 0: under gravity, or after a relaxation (`relaxed`) (gravity.cpp).
   void hold_transmitting_boundaries(bool relaxed = false);
-  void kick_particles();
   void constrain_velocities();
-  void drift_particles();
   void drift_nodes_and_account_energy();
   void advance_clock();        // dt, time and cycle move on to the step just taken
   void check_drifted_nodes();  // the first node the drift found non-finite or outside the box stops the run
   // t_(n+1/2) - t_(n-1/2): the interval of the velocity update at t_n (central difference).
   double centred_step() const { return 0.5 * (dt_ + dt_next_); }
-  void particle_kinematics();
   void element_kinematics();
   void gather_element_state();
   void choose_time_step();
   void start_energy_and_step();  // the first step's vote and the initial energy (constructor, set_initial_velocity)
-  void erode_elements();  // FEM erosion, which the join follows (particle_stages.cpp)
-  // The registered packages' parts of the stages (package_stages.cpp).
+  void erode_elements();  // FEM erosion, which the join follows (coupling_stages.cpp)
+  // The packages' parts of the stages, each a loop over packages_ in order (package_stages.cpp).
+  void register_package(std::unique_ptr<Package<D>> package);
   void add_package_forces();
+  void add_package_gravity(const std::array<double, 3>& g, double& power);
   void kick_packages();
   void drift_packages();
   void update_packages();
   void check_packages() const;
-  double package_internal_energy() const;
+  double package_internal_energy();  // and the shares in split_
+  double package_kinetic_energy() const;
   void vote_packages(double& dt, std::string& reason) const;
+  std::string describe_package_point(EntityKind kind, std::int64_t id) const;
+  void visit_package_state(StateVisitor& visitor);
 
   [[noreturn]] void fail(NumericalError error) const;
   // Numerical-failure diagnostics (solver_checks.cpp): a node or particle outside the
   // domain box or with a non-finite position or velocity stops the run; an
   // entity is described by material and position in every failure message.
-  void check_nodes_and_particles() const;
-  void check_particles() const;
+  void check_nodes_and_packages() const;
   [[noreturn]] void fail_node(std::int64_t n) const;  // 0-based; non-finite or outside the box
   void check_axis_crossings();                        // r-z: nodes moved to r < 0, reported (a warning)
   std::string describe(EntityKind kind, std::int64_t id) const;
@@ -172,14 +177,13 @@ class Solver {
   GeometryMode mode_;
 
   FemPackage<D> fem_;  // nodes, elements, material batches, bars, erosion (fem/)
-  std::unique_ptr<sph::SphSystem<D>> particles_;
-  std::unique_ptr<SphFemJoin<D>>
-      join_;                    // SPH-FEM join (coupling/); in place: it registers itself with particles_
-  double join_power_ = 0.0;     // W, pair work across the join that no internal energy books
-  std::vector<std::unique_ptr<Package<D>>> packages_;  // registered with add_package
-  double package_kinetic_ = 0.0;  // J, the registered packages' centred kinetic energy at t_n
-  SlidingContact<D> contact_;   // particles against FEM faces (coupling/)
-  double contact_power_ = 0.0;  // W, power of the contact forces
+  // Every method but FEM, in the order of their stages: the SPH particles first (when the
+  // model has any), then those registered with add_package.
+  std::vector<std::unique_ptr<Package<D>>> packages_;
+  sph::SphPackage<D>* sph_ = nullptr;  // the particle package in packages_ (particles())
+  double package_kinetic_ = 0.0;       // J, the packages' centred kinetic energy at t_n
+  // The join and the contact between the particles and FEM (coupling/); null without particles.
+  std::unique_ptr<SphFemCoupling<D>> coupling_;
   std::int64_t first_tangled_element_ = 0, first_tangled_cycle_ = -1;  // see first_tangled_element()
   std::int64_t last_tangled_element_ = 0;
   int tangled_reports_ = 0;                                   // warnings printed (at most 20)

@@ -1,6 +1,7 @@
-// Numerical-failure diagnostics of the cycle: nodes and particles
-// must stay finite and inside the case's domain box ([run] domain_min /
-// domain_max), and every failure names the entity's material and position.
+// Numerical-failure diagnostics of the cycle: nodes must stay finite and
+// inside the case's domain box ([run] domain_min / domain_max), as the
+// packages check their points (SphPackage::check), and every failure names
+// the entity's material and position.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -38,19 +39,9 @@ std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
                        model_.materials[static_cast<std::size_t>(fem_.elements.material[k])].name,
                        position_text<D>(c));
   }
-  if (kind == EntityKind::particle && particles_ && k < particles_->size()) {
-    // Particles are named by id; the memory index differs once they are re-sorted by cell.
-    const auto& p = particles_->particles();
-    std::size_t i = k;
-    for (std::size_t j = 0; j < p.real; ++j)
-      if (p.id[j] == k) i = j;
-    return fmt::format("material '{}', position {}",
-                       model_.materials[static_cast<std::size_t>(p.material[i])].name,
-                       position_text<D>(p.position[i].c.data()));
-  }
   if (kind == EntityKind::node && k < fem_.node_mass.size())
     return fmt::format("position {}", position_text<D>(&fem_.position[k * D]));
-  return {};
+  return describe_package_point(kind, id);
 }
 
 template <int D>
@@ -100,7 +91,7 @@ void Solver<D>::fail_node(std::int64_t bad) const {
 }
 
 template <int D>
-void Solver<D>::check_nodes_and_particles() const {
+void Solver<D>::check_nodes_and_packages() const {
   const std::int64_t nn = static_cast<std::int64_t>(fem_.node_mass.size());
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
 #pragma omp parallel for schedule(static) reduction(min : bad) if (nn > 20000)
@@ -112,37 +103,13 @@ void Solver<D>::check_nodes_and_particles() const {
     if (!ok) bad = std::min(bad, n);
   }
   if (bad != std::numeric_limits<std::int64_t>::max()) fail_node(bad);
-  check_particles();
-}
-
-template <int D>
-void Solver<D>::check_particles() const {
-  if (!particles_) return;
-  const RunControl& run = model_.run;
-  const auto& p = particles_->particles();
-  for (std::size_t i = 0; i < p.real; ++i) {
-    const double* x = p.position[i].c.data();
-    bool finite = true;
-    for (int d = 0; d < D; ++d) finite = finite && std::isfinite(x[d]) && std::isfinite(p.velocity[i][d]);
-    if (!finite)
-      fail(NumericalError(EntityKind::particle, static_cast<std::int64_t>(p.id[i]) + 1, "velocity",
-                          "non-finite position or velocity"));
-    const int axis = first_outside_domain<D>(model_.run, x);
-    if (axis >= 0)
-      fail(NumericalError(
-          EntityKind::particle, static_cast<std::int64_t>(p.id[i]) + 1, "position",
-          fmt::format("left the domain box: coordinate {} = {:.6g} m outside [{:.6g}, {:.6g}] m", axis + 1,
-                      x[axis], run.domain_min[static_cast<std::size_t>(axis)],
-                      run.domain_max[static_cast<std::size_t>(axis)])));
-  }
+  check_packages();
 }
 
 template std::string Solver<2>::describe(EntityKind, std::int64_t) const;
 template std::string Solver<3>::describe(EntityKind, std::int64_t) const;
-template void Solver<2>::check_nodes_and_particles() const;
-template void Solver<3>::check_nodes_and_particles() const;
-template void Solver<2>::check_particles() const;
-template void Solver<3>::check_particles() const;
+template void Solver<2>::check_nodes_and_packages() const;
+template void Solver<3>::check_nodes_and_packages() const;
 template void Solver<2>::fail_node(std::int64_t) const;
 template void Solver<3>::fail_node(std::int64_t) const;
 template void Solver<2>::check_axis_crossings();

@@ -34,13 +34,14 @@ void Solver<D>::visit_state(StateVisitor& v) {
   visit(v, "energy_split.join", split_.join);
   visit(v, "energy_split.join_face", split_.join_face);
   visit(v, "energy_split.contact", split_.contact);
-  visit(v, "energy_split.sph_kinetic", split_.sph_kinetic);
-  visit(v, "energy_split.sph_internal", split_.sph_internal);
+  for (auto& share : split_.packages) {
+    visit(v, "energy_split." + share.name + "_kinetic", share.kinetic);
+    visit(v, "energy_split." + share.name + "_internal", share.internal);
+  }
   visit(v, "energy_split.bar_internal", split_.bar_internal);
   visit(v, "energy_split.gravity", split_.gravity);
   visit(v, "eroded_count", fem_.eroded_count);
-  visit(v, "join_power", join_power_);
-  visit(v, "contact_power", contact_power_);
+  if (coupling_) coupling_->visit_state(v);  // join_power, contact_power
   visit(v, "internal_energy", internal_energy_);
   visit(v, "hourglass_stored", fem_.hourglass_stored);
   visit(v, "hourglass_dissipated", fem_.hourglass_dissipated);
@@ -48,14 +49,10 @@ void Solver<D>::visit_state(StateVisitor& v) {
   fem_.visit_state(v);  // nodes, elements, material batches (the bars come after the particles)
   boundaries_.visit_state(v);
   transmitting_.visit_state(v);
-  if (particles_) particles_->visit_state(v);
+  visit_package_state(v);  // each in its own scope (SPH: "sph")
   fem_.bars.visit_state(v);
-  for (const auto& package : packages_) {
-    StateScope package_scope(v, "package." + package->name());
-    package->visit_state(v);
-  }
   // The join's interface is a function of the eroded flags (coupling/join_erosion.cpp).
-  if (join_ && v.loading()) join_->follow_erosion();
+  if (coupling_ && v.loading()) coupling_->follow_erosion();
 }
 
 template void Solver<2>::visit_state(StateVisitor&);

@@ -64,17 +64,17 @@ template <int D>
 void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
   using P = PairPoint<D>;
   const std::size_t n = p_.real;
-  const PairPoint<D>* points = pair_points_.data();
+  const PairPoint<D>* points = factors_.packed.data();
   const double* fi = points[i].f;
   const auto list = active_upper_neighbours(i);
-  Vec<D>* dissipation_out = pair_dissipation_.data() + upper_index_[i];
+  Vec<D>* dissipation_out = pair_dissipation_.data() + active_.upper_index()[i];
   const bool volume_form = options_.volume_form;
   const bool tensile = options_.artificial_stress;
   const bool switched = options_.viscosity_switch && options_.viscosity_alpha > 0.0;
   const double alpha_fixed = options_.viscosity_alpha, beta_fixed = options_.viscosity_beta;
   const double mi = fi[P::m], eta_i = fi[P::eta], ci = fi[P::c];
   const double inv_eta_i = 1.0 / eta_i;
-  const bool tensile_i = tensile && has_tensile_[i];
+  const bool tensile_i = tensile && factors_.has_tensile[i];
   const Lanes zero{};
   Lanes acc[D] = {}, mu_max{}, count{};
   for (std::size_t e0 = 0; e0 < list.size(); e0 += pair_lanes) {
@@ -100,7 +100,7 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     Lanes* dissipation = viscous.dissipation;
     if (tensile) {
       LaneMask has;
-      for (int l = 0; l < pair_lanes; ++l) has[l] = (tensile_i || has_tensile_[g.j[l]]) ? -1 : 0;
+      for (int l = 0; l < pair_lanes; ++l) has[l] = (tensile_i || factors_.has_tensile[g.j[l]]) ? -1 : 0;
       has &= g.inside;
       if (any_of(has)) {
         const Lanes fn = tensile_weight(w.shape * tensile_shape_inverse_, options_.artificial_stress_power,
@@ -146,7 +146,7 @@ template <int D>
 void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
   using P = PairPoint<D>;
   const std::size_t n = p_.real;
-  const PairPoint<D>* points = pair_points_.data();
+  const PairPoint<D>* points = factors_.packed.data();
   const double* fi = points[i].f;
   const auto list = active_upper_neighbours(i);
   const bool volume_form = options_.volume_form;

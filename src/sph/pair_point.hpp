@@ -1,6 +1,9 @@
 #pragma once
-// The packed per-point record of the SPH pair loops (pair_lanes.hpp): one
-// record per particle, ghost and coupling point, refreshed before each pass.
+// What the SPH pair loops read of each point besides the particle arrays: the
+// packed record of the SIMD loops (pair_lanes.hpp) and the pair weights, one
+// entry per particle, ghost and coupling point, refreshed before each pass
+// (SphSystem::fill_point_factors).
+#include <vector>
 
 namespace camouflet::sph {
 
@@ -18,6 +21,15 @@ struct alignas(64) PairPoint {
   static constexpr int eta = 2 * D + 8;     // planar density
   static constexpr int c = 2 * D + 9;       // m/s, wave speed
   double f[2 * D + 10];
+};
+
+template <int D>
+struct PointFactors {
+  std::vector<double> sum_density;         // eta_q (SphSystem::quadrature_density)
+  std::vector<double> inverse_density;     // 1 / eta_q
+  std::vector<double> volume;              // m / eta_q, m^3 (m^2 per radian x 2 pi in r-z)
+  std::vector<unsigned char> has_tensile;  // the artificial stress R is not zero
+  std::vector<PairPoint<D>> packed;        // the SIMD loops' records (kernel correction off)
 };
 
 }  // namespace camouflet::sph

@@ -50,12 +50,12 @@ void SphSystem<D>::compute_accelerations() {
 template <int D>
 void SphSystem<D>::size_point_factors() {
   const std::size_t total = p_.position.size();
-  sum_density_.resize(total);
-  inverse_density_.resize(total);
-  point_volume_.resize(total);
-  has_tensile_.resize(total);
+  factors_.sum_density.resize(total);
+  factors_.inverse_density.resize(total);
+  factors_.volume.resize(total);
+  factors_.has_tensile.resize(total);
   // The SIMD pair loops (no kernel correction) read the packed records, filled in the same pass.
-  if (!options_.kernel_correction) pair_points_.resize(total);
+  if (!options_.kernel_correction) factors_.packed.resize(total);
 }
 
 template <int D>
@@ -67,14 +67,14 @@ void SphSystem<D>::fill_point_factors() {
 #pragma omp for schedule(static)
   for (std::size_t k = 0; k < total; ++k) {
     const double eta_q = quadrature_density(k);
-    sum_density_[k] = eta_q;
-    inverse_density_[k] = 1.0 / eta_q;
-    point_volume_[k] = p_.mass[k] / eta_q;
+    factors_.sum_density[k] = eta_q;
+    factors_.inverse_density[k] = 1.0 / eta_q;
+    factors_.volume[k] = p_.mass[k] / eta_q;
     const SymTensor& r = p_.tensile_term[k];
-    has_tensile_[k] =
+    factors_.has_tensile[k] =
         tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
     if (!pack) continue;
-    double* f = pair_points_[k].f;
+    double* f = factors_.packed[k].f;
     for (int a = 0; a < D; ++a) {
       f[P::x + a] = p_.position[k][a];
       f[P::v + a] = p_.velocity[k][a];
@@ -87,75 +87,6 @@ void SphSystem<D>::fill_point_factors() {
     f[P::eta] = eta_q;  // eta_q: the pair weights (quadrature_density)
     f[P::c] = p_.wave_speed[k];
   }
-}
-
-template <int D>
-void SphSystem<D>::refresh_active_pairs() {
-  const std::size_t n = p_.real, total = p_.position.size();
-  const auto& x = p_.position;
-  const auto& h = p_.smoothing_length;
-  if (active_builds_ == search_.builds() && active_x_.size() == total) {
-    // Same criterion as NeighbourSearch::needs_rebuild, against the extraction.
-    double d2_max = 0.0, dh_max = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : d2_max, dh_max)
-    for (std::size_t k = 0; k < total; ++k) {
-      const Vec<D> d = x[k] - active_x_[k];
-      d2_max = std::max(d2_max, dot(d, d));
-      dh_max = std::max(dh_max, h[k] - active_h_[k]);
-    }
-    if (2.0 * std::sqrt(d2_max) + support_factor * dh_max <= active_margin_) return;
-  }
-  active_builds_ = search_.builds();
-  ++active_extractions_;
-  active_x_.assign(x.begin(), x.end());
-  active_h_.assign(h.begin(), h.end());
-  active_offset_.assign(n + 1, 0);
-  // The cell lists hold every pair within 2 h_ij + (their skin - the part of it used):
-  // the thin skin can be no wider than that.
-  const double skin = std::max(0.0, std::min(active_skin_, search_.skin() - search_.skin_used(x, h)));
-  active_margin_ = skin;
-  auto inside = [&](std::size_t i, std::uint32_t j) {
-    const Vec<D> dx = x[i] - x[j];
-    const double reach = support_factor * pair_smoothing_length(h[i], h[j]) + skin;
-    return dot(dx, dx) < reach * reach;
-  };
-  // One pass over the cell lists: each block of particles collects its entries
-  // in a buffer of its own, then the buffers are copied into place.
-  constexpr std::size_t block = 256;
-  const std::size_t n_blocks = (n + block - 1) / block;
-  std::vector<std::vector<std::uint32_t>> found(n_blocks);
-#pragma omp parallel for schedule(dynamic, 4)
-  for (std::size_t b = 0; b < n_blocks; ++b) {
-    std::vector<std::uint32_t>& buffer = found[b];
-    const std::size_t end = std::min(n, (b + 1) * block);
-    std::size_t candidates = 0;
-    for (std::size_t i = b * block; i < end; ++i) candidates += search_.neighbours(i).size();
-    buffer.reserve(candidates);
-    for (std::size_t i = b * block; i < end; ++i) {
-      const std::size_t start = buffer.size();
-      for (const std::uint32_t j : search_.neighbours(i))
-        if (inside(i, j)) buffer.push_back(j);
-      active_offset_[i + 1] = buffer.size() - start;
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) active_offset_[i + 1] += active_offset_[i];
-  active_.resize(active_offset_[n]);
-  active_upper_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < n_blocks; ++b) {
-    std::copy(found[b].begin(), found[b].end(),
-              active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[b * block]));
-    const std::size_t end = std::min(n, (b + 1) * block);
-    for (std::size_t i = b * block; i < end; ++i) {
-      const auto first = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i]);
-      const auto last = active_.begin() + static_cast<std::ptrdiff_t>(active_offset_[i + 1]);
-      active_upper_[i] = static_cast<std::size_t>(
-          std::upper_bound(first, last, static_cast<std::uint32_t>(i)) - active_.begin());
-    }
-  }
-  upper_index_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    upper_index_[i + 1] = upper_index_[i] + (active_offset_[i + 1] - active_upper_[i]);
 }
 
 namespace {
@@ -172,7 +103,7 @@ void SphSystem<D>::prepare_row_blocks() {
   // the sums do not depend on which thread runs a block. One thread: one block, the serial loop.
   const int threads = std::max(1, omp_get_max_threads());
   const std::size_t blocks = threads == 1 ? 1 : static_cast<std::size_t>(blocks_per_thread * threads);
-  if (row_blocks_extraction_ == active_extractions_ &&
+  if (row_blocks_extraction_ == active_.extractions() &&
       row_blocks_.count() == std::min(blocks, std::max<std::size_t>(p_.real, 1)))
     return;
   const std::size_t n = p_.real;
@@ -185,8 +116,8 @@ void SphSystem<D>::prepare_row_blocks() {
     while (e > 0 && list[e - 1] >= n) --e;
     return e > 0 ? std::max<std::size_t>(i + 1, list[e - 1] + 1) : i + 1;
   };
-  row_blocks_.build(blocks, n, upper_index_.data(), row_cost, reach);
-  row_blocks_extraction_ = active_extractions_;
+  row_blocks_.build(blocks, n, active_.upper_index().data(), row_cost, reach);
+  row_blocks_extraction_ = active_.extractions();
 }
 
 template <int D>
@@ -204,7 +135,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   refresh_active_pairs();
   size_point_factors();
-  pair_dissipation_.resize(upper_index_[n]);
+  pair_dissipation_.resize(active_.upper_index()[n]);
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
   force_sums_.prepare(blocks, n);
@@ -215,9 +146,9 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const auto& x = p_.position;
   const auto& v = p_.velocity;
   const auto& m = p_.mass;
-  const auto& eta = sum_density_;  // eta_q: the pair weights (quadrature_density)
+  const auto& eta = factors_.sum_density;  // eta_q: the pair weights (quadrature_density)
   const auto& h = p_.smoothing_length;
-  const auto& inv_eta = inverse_density_;
+  const auto& inv_eta = factors_.inverse_density;
   const PairViscosity<> fixed = pair_viscosity(options_, 0.0, 0.0);
   // One parallel region: the point factors (barrier), the rows, their sums (docs/performance.md,
   // "Fewer parallel regions").
@@ -233,7 +164,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
       Vec<D> acc{};
       double mu_max = 0.0;
       int count = 0;
-      const std::size_t base = upper_index_[i];
+      const std::size_t base = active_.upper_index()[i];
       const auto list = active_upper_neighbours(i);
       for (std::size_t e = 0; e < list.size(); ++e) {
         const std::uint32_t j = list[e];
@@ -257,7 +188,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
                                                                p_.wave_speed[j], eta[i], eta[j], q.alpha, q.beta);
         const double mu = viscous.mu;
         if (viscous.approaching) mu_max = std::max(mu_max, -mu);
-        if (tensile && (has_tensile_[i] | has_tensile_[j])) {
+        if (tensile && (factors_.has_tensile[i] | factors_.has_tensile[j])) {
           const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
           const auto r_sum = components(p_.tensile_term[i] + p_.tensile_term[j]);
           subtract_tensile_pair<D>(true, r_sum.data(), grad_a, fn, viscous.dissipation);
@@ -300,12 +231,10 @@ void SphSystem<D>::force_pass(bool write_rates) {
     }
   }
   pair_dissipation_current_ = true;
-  pair_dissipation_extraction_ = active_extractions_;
+  pair_dissipation_extraction_ = active_.extractions();
 }
 
 // The class itself is instantiated in sph_system.cpp; these are its members defined here.
-template void SphSystem<2>::refresh_active_pairs();
-template void SphSystem<3>::refresh_active_pairs();
 template void SphSystem<2>::prepare_row_blocks();
 template void SphSystem<3>::prepare_row_blocks();
 template void SphSystem<2>::force_pass(bool);

@@ -173,8 +173,8 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
   const auto& m = p_.mass;
   const auto& h = p_.smoothing_length;
   const bool volume_form = options_.volume_form;
-  const auto& volume = point_volume_;
-  const auto& inv_eta = inverse_density_;
+  const auto& volume = factors_.volume;
+  const auto& inv_eta = factors_.inverse_density;
   KinematicSum mine;
   for (const std::uint32_t j : active_upper_neighbours(i)) {
     const Vec<D> dx = x[i] - x[j];

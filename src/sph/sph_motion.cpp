@@ -37,7 +37,7 @@ void SphSystem<D>::kick(double dt) {
   };
   // After a restart between the force stage and the kick the pair terms are not stored:
   // the force pass at the same x(n), v(n-1/2) gives them again, bit for bit.
-  const bool stored = pair_dissipation_current_ && pair_dissipation_extraction_ == active_extractions_;
+  const bool stored = pair_dissipation_current_ && pair_dissipation_extraction_ == active_.extractions();
   if (!stored) {
 #pragma omp parallel
     kick_particles();
@@ -78,7 +78,7 @@ void SphSystem<D>::kick(double dt) {
       const Vec<D> sum_i = hp[i].velocity_sum;
       const double mi = hp[i].mass;
       double heat = 0.0;
-      const std::size_t base = upper_index_[i];
+      const std::size_t base = active_.upper_index()[i];
       const auto list = active_upper_neighbours(i);
       for (std::size_t e = 0; e < list.size(); ++e) {
         const std::uint32_t j = list[e];
@@ -112,7 +112,7 @@ void SphSystem<D>::book_axis_image_work(double dt) {
   const auto& x = p_.position;
   const auto& h = p_.smoothing_length;
   const auto& m = p_.mass;
-  const auto& eta = sum_density_;
+  const auto& eta = factors_.sum_density;
   const bool tensile = options_.artificial_stress;
   const double power = options_.artificial_stress_power;
 #pragma omp parallel for schedule(dynamic, 256)
@@ -130,7 +130,7 @@ void SphSystem<D>::book_axis_image_work(double dt) {
       const auto w = kernel_.pair_terms(std::sqrt(r2), 1.0 / hij);
       const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
       SymTensor term = p_.stress_term[j] * (1.0 / eta[i]);
-      if (tensile && (has_tensile_[i] | has_tensile_[j]))
+      if (tensile && (factors_.has_tensile[i] | factors_.has_tensile[j]))
         term += p_.tensile_term[j] *
                 tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
       work += 2.0 * m[j] * dot(apply<D>(term, grad), v_mean);

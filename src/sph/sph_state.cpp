@@ -90,7 +90,7 @@ void SphSystem<D>::visit_state(StateVisitor& v) {
   visit(v, "velocity_old", velocity_old_);
   // The pair terms of the last force pass are not stored: kick() recomputes them.
   // Nor is the active pair list (sph_system.hpp): any complete list gives the same sums.
-  if (v.loading()) pair_dissipation_current_ = false, active_builds_ = -1;
+  if (v.loading()) pair_dissipation_current_ = false, active_.forget();
   for (std::size_t m = 0; m < batches_.size(); ++m) {
     StateScope batch(v, "batch" + std::to_string(m));
     camouflet::visit_state(v, batches_[m]);

@@ -131,7 +131,7 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
     h_min = std::min(h_min, p_.smoothing_length[i]);
   }
   skin_ = n ? options_.skin_factor * h_min : 0.0;
-  active_skin_ = std::min(skin_, n ? 0.1 * h_min : 0.0);
+  active_.set_skin(std::min(skin_, n ? 0.1 * h_min : 0.0));
   gather_material_state();
 }
 

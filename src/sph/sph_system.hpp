@@ -50,8 +50,9 @@
 #include "core/vec.hpp"
 #include "materials/material.hpp"
 #include "model/model.hpp"
-#include "output/snapshot.hpp"
+#include "model/snapshot.hpp"
 #include "model/run_summary.hpp"
+#include "sph/active_pairs.hpp"
 #include "sph/kernel.hpp"
 #include "boundary/mirror_planes.hpp"
 #include "sph/neighbour_search.hpp"
@@ -117,6 +118,9 @@ class SphSystem {
   const ParticleArrays<D>& particles() const { return p_; }
   GeometryMode mode() const { return mode_; }
   const SphOptions& options() const { return options_; }
+  // The planes the particles are mirrored in, in the order their images are made: the axis of
+  // an r-z model first, then the caller's.
+  const std::vector<MirrorPlane>& mirror_planes() const { return planes_; }
 
   // --- stages of the cycle ---
   void compute_accelerations();
@@ -257,33 +261,11 @@ class SphSystem {
     std::vector<int> material, neighbour_count;
   };
   mutable IdOrderCopy id_order_;
-  // Second-level pair list (Verlet list of the Verlet list): the entries of
-  // the cell-search lists with |x_i - x_j| < 2 h_ij + active_skin_ when
-  // extracted, in list order. The pair sums run over it: the cell lists carry
-  // a skin of ~0.3 h (rebuilt every ~10 steps), i.e. about twice the pairs
-  // inside the support, while this one is re-extracted (a cheap scan) only
-  // when 2 max|x - x_extracted| + 2 max(h - h_extracted) exceeds its thin skin.
-  // Any list that holds every pair inside the support gives the same sums, bit
-  // for bit: only the skipped pairs differ.
-  void refresh_active_pairs();
-  std::span<const std::uint32_t> active_neighbours(std::size_t i) const {
-    return {active_.data() + active_offset_[i], active_offset_[i + 1] - active_offset_[i]};
-  }
-  // The part with j > i: every pair of particles once, and all of i's pairs
-  // with points that have no sums of their own (ghosts, coupling points).
-  std::span<const std::uint32_t> active_upper_neighbours(std::size_t i) const {
-    return {active_.data() + active_upper_[i], active_offset_[i + 1] - active_upper_[i]};
-  }
-  std::vector<std::uint32_t> active_;
-  std::vector<std::size_t> active_offset_;
-  std::vector<std::size_t> active_upper_;  // first entry of active list i with j > i
-  std::vector<std::size_t> upper_index_;   // n + 1: start of i's j > i entries among all such entries
-  std::vector<Vec<D>> active_x_;           // m, positions at the extraction
-  std::vector<double> active_h_;           // m, smoothing lengths at the extraction
-  std::int64_t active_builds_ = -1;        // cell-list build it was extracted from (-1: none)
-  double active_skin_ = 0.0;               // m, the thin skin asked for
-  double active_margin_ = 0.0;             // m, the skin of the current extraction (<= active_skin_)
-  // Per upper active entry (j > i; entry e of i at upper_index_[i] + e): Pi_ij grad W - f^n (R_i + R_j) .
+  // The pair list the sums run over (active_pairs.hpp), refreshed at the start of each sum.
+  ActivePairs<D> active_;
+  void refresh_active_pairs() { active_.refresh(search_, p_.position, p_.smoothing_length, p_.real); }
+  std::span<const std::uint32_t> active_upper_neighbours(std::size_t i) const { return active_.upper_neighbours(i); }
+  // Per upper active entry (j > i; entry e of i at active_.upper_index()[i] + e): Pi_ij grad W - f^n (R_i + R_j) .
   // grad W, the viscous and artificial-stress part of the pair force of the last force_pass() per unit mass
   // product, whose work kick() books as heat without evaluating the kernel again.
   std::vector<Vec<D>> pair_dissipation_;
@@ -306,7 +288,6 @@ class SphSystem {
   // The pair loops on SIMD lanes (pair_lanes.cpp; without the kernel
   // correction): row i of force_pass() and of update_state()'s kinematics,
   // adding to own (the copy of the sums of the row's block), from the packed records.
-  std::vector<PairPoint<D>> pair_points_;  // per point, refreshed by fill_point_factors()
   void force_row_lanes(std::size_t i, ForceSum* own);
   void kinematics_row_lanes(std::size_t i, KinematicSum* own);
   // The stages of update_state() (sph_kinematics.cpp): x and eta to mid-step; row i's
@@ -326,12 +307,8 @@ class SphSystem {
   std::vector<Vec<D>> scratch_x_;    // update_state(): x(n+1) while the rates use x(n+1/2)
   std::vector<double> scratch_eta_;  // update_state(): eta(n) while the pair weights use eta(n+1/2)
   bool pair_dissipation_current_ = false;
-  std::int64_t active_extractions_ = 0;            // active-list extractions so far
   std::int64_t pair_dissipation_extraction_ = -1;  // extraction the stored terms belong to
-  std::vector<double> sum_density_;                // eta_q per point, scratch of the pair sums
-  std::vector<double> inverse_density_;            // 1/eta_q per point, scratch of the pair sums
-  std::vector<double> point_volume_;               // m/eta_q per point, scratch of the pair sums
-  std::vector<unsigned char> has_tensile_;         // artificial stress R != 0, per point
+  PointFactors<D> factors_;  // per point, the pair sums' scratch (pair_point.hpp), by fill_point_factors()
   double tensile_shape_inverse_ = 1.0;             // 1 / w(1 / smoothing_factor): W(dp, h) = C w / h^D
   int tensile_power_integer_ = 0;                  // artificial_stress_power when a small integer, else 0
   std::size_t volume_limited_ = 0;                 // volume_limited_count()

@@ -126,4 +126,24 @@ TEST(Layers, NoSourceFileLongerThan600Lines) {
   EXPECT_GT(files, 100) << "no sources found under " << src;
 }
 
+TEST(Layers, SolverStagesReachTheParticlesOnlyAsAPackage) {
+  // The driver loops over packages (docs/architecture.md, "Packages"): no file of src/solver
+  // holds or names the particle system; the couplings reach it through SphPackage::system().
+  const fs::path solver = fs::path(CAMOUFLET_SOURCE_DIR) / "src" / "solver";
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(solver)) {
+    if (entry.path().extension() != ".cpp") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    int line = 0;
+    for (std::string text; std::getline(in, text);) {
+      ++line;
+      for (const char* name : {"particles_", "SphSystem"})
+        EXPECT_EQ(text.find(name), std::string::npos)
+            << "src/solver/" << entry.path().filename().string() << ":" << line << " names " << name;
+    }
+  }
+  EXPECT_GT(files, 5) << "no sources found under " << solver;
+}
+
 }  // namespace

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "output/snapshot.hpp"
+#include "model/snapshot.hpp"
 
 namespace camouflet::test {
 

@@ -1,5 +1,5 @@
 // A method added without editing the driver: a package of rigid point masses
-// (core/package.hpp), registered with Solver::add_package beside an FEM block,
+// (model/package.hpp), registered with Solver::add_package beside an FEM block,
 // falls under gravity as g t^2 / 2 and bounces elastically off the model's
 // symmetry plane (a point meeting its mirror image there), with gravity's
 // work on it in the energy balance; its presence leaves the FEM block's motion
@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <limits>
 
@@ -39,14 +40,13 @@ class RigidPoints : public Package<D> {
       side_.push_back(x_[static_cast<std::size_t>(p.axis)] >= p.position ? 1.0 : -1.0);
   }
   std::string name() const override { return "rigid_points"; }
-  double add_forces(double, const std::array<double, 3>& gravity) override {
-    double power = 0.0;
+  void add_forces(double) override { std::fill(a_.begin(), a_.end(), 0.0); }
+  void add_gravity(const std::array<double, 3>& gravity, double& power) override {
     for (std::size_t k = 0; k < m_.size(); ++k)
       for (int i = 0; i < D; ++i) {
-        a_[k * D + i] = gravity[static_cast<std::size_t>(i)];
+        a_[k * D + i] += gravity[static_cast<std::size_t>(i)];
         power += m_[k] * gravity[static_cast<std::size_t>(i)] * v_[k * D + i];
       }
-    return power;
   }
   void kick(double dt_mean) override {
     v_old_ = v_;
@@ -83,13 +83,14 @@ class RigidPoints : public Package<D> {
     return e;
   }
   double internal_energy() const override { return 0.0; }
-  std::string check() const override {
+  void check() const override {
     for (std::size_t k = 0; k < x_.size(); ++k)
       if (!std::isfinite(x_[k]) || !std::isfinite(v_[k]))
-        return fmt::format("point {}: non-finite position or velocity", k / D + 1);
-    return {};
+        throw NumericalError(EntityKind::model, 0, "rigid point velocity",
+                             fmt::format("point {}: non-finite position or velocity", k / D + 1));
   }
   void visit_state(StateVisitor& visitor) override {
+    StateScope scope(visitor, "package." + name());
     visit(visitor, "position", x_);
     visit(visitor, "velocity", v_);
     visit(visitor, "velocity_old", v_old_);
@@ -138,6 +139,8 @@ void expect_fall_and_bounce(const std::string& label) {
   auto points = std::make_unique<RigidPoints<D>>(sph::symmetry_mirror_planes(model), x, v, std::vector<double>{mass});
   const RigidPoints<D>& p = *points;
   with.add_package(std::move(points));
+  EXPECT_THROW(with.relax({0.1, 1e-4, 1.0, {}}), std::logic_error)
+      << "a relaxation refuses a package it would not damp";
   EXPECT_THROW(with.add_package(std::make_unique<RigidPoints<D>>(sph::symmetry_mirror_planes(model), x, v,
                                                                  std::vector<double>{mass})),
                std::logic_error)

@@ -1,0 +1,24 @@
+// The coupling stages of step() (solver.cpp lists them all): the join's and the contact's
+// forces between the particles and the FEM nodes, and the join following the FEM package's
+// erosion.
+#include "solver/solver.hpp"
+
+namespace camouflet {
+
+template <int D>
+void Solver<D>::add_coupling_forces() {
+  if (coupling_) coupling_->add_forces(centred_step());  // join reactions, contact (coupling/)
+}
+
+template <int D>
+void Solver<D>::erode_elements() {
+  // The SPH-FEM interface loses the eroded elements' faces and gains those they exposed.
+  if (fem_.erode(dt_, energy_.eroded) && coupling_) coupling_->follow_erosion();
+}
+
+template void Solver<2>::add_coupling_forces();
+template void Solver<3>::add_coupling_forces();
+template void Solver<2>::erode_elements();
+template void Solver<3>::erode_elements();
+
+}  // namespace camouflet

@@ -73,6 +73,10 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     read(*t, "top_depth", s.top_depth, s);
     read(*t, "width", s.box_width, s);
     read(*t, "concrete", s.concrete, s);
+    if (t->has("kind")) {
+      s.free_field = t->choice("kind", {"box", "free_field"}, "box") == "free_field";
+      s.where["structure.kind"] = t->where("kind");
+    }
     read_hourglass(*t, s.structure_hourglass, s.structure_hourglass_coefficient, s);
     t->finish();
   }

@@ -33,16 +33,18 @@ void write_member_gauges(const BuriedStructureSpec& s, bool three_d, std::string
   b += "\n# Members of the box (docs/buried-structure.md, \"In-structure shock in the report\"): the mass-weighted mean motion\n"
        "# of the concrete elements centred in each box, the span's rigid-body motion (members.csv).\n";
   b += "[[gauges]]\nname = \"members\"\nmembers = [\n";
+  // A free-field run measures the soil in the members' places.
+  const char* member_material = s.free_field ? "soil" : "concrete";
   for (const Member& m : members) {
     if (three_d)
       fmt::format_to(out,
-                     "  {{ name = \"{}\", material = \"concrete\", min = [{:.9g}, {:.9g}, {:.9g}], "
+                     "  {{ name = \"{}\", material = \"{}\", min = [{:.9g}, {:.9g}, {:.9g}], "
                      "max = [{:.9g}, {:.9g}, {:.9g}] }},\n",
-                     m.name, m.r_lo - eps, -eps, m.z_lo - eps, m.r_hi + eps, m.y_hi + eps, m.z_hi + eps);
+                     m.name, member_material, m.r_lo - eps, -eps, m.z_lo - eps, m.r_hi + eps, m.y_hi + eps, m.z_hi + eps);
     else
       fmt::format_to(out,
-                     "  {{ name = \"{}\", material = \"concrete\", min = [{:.9g}, {:.9g}], max = [{:.9g}, {:.9g}] }},\n",
-                     m.name, m.r_lo - eps, m.z_lo - eps, m.r_hi + eps, m.z_hi + eps);
+                     "  {{ name = \"{}\", material = \"{}\", min = [{:.9g}, {:.9g}], max = [{:.9g}, {:.9g}] }},\n",
+                     m.name, member_material, m.r_lo - eps, m.z_lo - eps, m.r_hi + eps, m.z_hi + eps);
   }
   b += "]\n";
 }
@@ -114,7 +116,7 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
                    s.soil_erosion_strain);
   fmt::format_to(out, "\n[materials.charge]\npreset = \"{}\"\n\n", s.explosive);
   fmt::format_to(out, "[materials.concrete]\npreset = \"{}\"\n\n", s.concrete);
-  if (s.has_rebar) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
+  if (s.has_rebar && !s.free_field) fmt::format_to(out, "[materials.steel]\npreset = \"{}\"\n\n", s.steel);
 }
 
 std::string part_geostatic(const BuriedStructureSpec& s, const std::string& material) {

@@ -40,6 +40,7 @@ Fill fill_of(const BuriedStructureSpec& s, double half, double r, double y) {
   const double y0 = s.top_depth, y1 = s.top_depth + s.box_height, t = s.wall_thickness;
   if (r > r0 && r < r1 && y > y0 && y < y1) {
     const bool interior = r > r0 + t && r < r1 - t && y > y0 + t && y < y1 - t;
+    if (s.free_field) return Fill::soil;  // the ground as it was before the box
     return interior ? Fill::empty : Fill::concrete;
   }
   return Fill::soil;
@@ -240,7 +241,10 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
     b +=
         "# Gravity: the soil, FEM and SPH, starts in its geostatic state (Jaky's K0); the box settles in it\n"
         "# by a dynamic relaxation before t = 0, the charge held unlit (docs/theory/gravity.md).\n";
-  if (s.has_rebar)
+  if (s.free_field)
+    b += "# Free field (structure.kind = \"free_field\"): the box's place and its interior are soil, no box and\n"
+         "# no bars; the structure targets and the members measure the ground where the box would stand.\n";
+  else if (s.has_rebar)
     fmt::format_to(
         out,
         "# Reinforcement: inner and outer mats in every wall, roof and floor as embedded bars at {} m\n"
@@ -312,7 +316,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
     b += "[sph]\nviscosity_alpha = 0.2  # linear term (see docs/buried-structure.md, \"SPH viscosity\")\n"
          "viscosity_beta = 2.0   # quadratic term\n\n";
   }
-  if (s.has_rebar) write_rebar(s, b);
+  if (s.has_rebar && !s.free_field) write_rebar(s, b);
   b += "# Boundaries: the axis r = 0; the far edges; the ground surface z = 0 is free.\n";
   b += boundaries;
 

@@ -81,6 +81,11 @@ struct BuriedStructureSpec {
   // written on [materials.soil]: elements thrown clear with the crater's ejecta and stretched past
   // it stop setting the time step (docs/buried-structure.md, "coarse3d").
   double soil_erosion_strain = 0.0;
+  // [structure] kind = "free_field": the box's place and its interior are soil, as the ground
+  // there was before the box was built; no box, no bars (a [rebar] block is ignored, and the
+  // header says so). The structure targets and the members then measure the free field at the
+  // box's position: the reference that the box's motion is weighed against (docs/buried-structure.md).
+  bool free_field = false;
   double soil_hourglass_kappa() const {
     return soil_hourglass_coefficient > 0.0 ? soil_hourglass_coefficient : hourglass_coefficient;
   }

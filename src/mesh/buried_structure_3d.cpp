@@ -47,6 +47,7 @@ Fill fill_of(const BuriedStructureSpec& s, double h, double x, double y, double 
   const double d0 = s.top_depth, d1 = s.top_depth + s.box_height, t = s.wall_thickness;
   if (x > x0 && x < x1 && y < yw && d > d0 && d < d1) {
     const bool interior = x > x0 + t && x < x1 - t && y < yw - t && d > d0 + t && d < d1 - t;
+    if (s.free_field) return Fill::soil;  // the ground as it was before the box
     return interior ? Fill::empty : Fill::concrete;
   }
   return Fill::soil;
@@ -200,7 +201,10 @@ void write_header(const BuriedStructureSpec& s, const BuriedStructureLayout& L, 
   else
     b += "# No SPH zone (sph.radius = 0): charge (JWL elements, programmed burn) and near field are FEM;\n"
          "# crater ejecta are not followed, and the run stops if elements next to the charge invert.\n";
-  if (s.has_rebar)
+  if (s.free_field)
+    b += "# Free field (structure.kind = \"free_field\"): the box's place and its interior are soil, no box and\n"
+         "# no bars; the structure targets and the members measure the ground where the box would stand.\n";
+  else if (s.has_rebar)
     fmt::format_to(
         out,
         "# Reinforcement: an inner and an outer mat in every wall, roof and floor, each of bars in both\n"
@@ -340,7 +344,7 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
     b += "[sph]\nviscosity_alpha = 0.2  # linear term (see docs/buried-structure.md, \"SPH viscosity\")\n"
          "viscosity_beta = 2.0   # quadratic term\n\n";
   }
-  if (s.has_rebar) write_rebar_3d(s, b);
+  if (s.has_rebar && !s.free_field) write_rebar_3d(s, b);
   b += "# Boundaries: the symmetry plane y = 0; the far faces; the ground surface z = 0 is free.\n";
   b += boundaries;
   fmt::format_to(out, "[[detonation]]\nposition = {}  # m, the charge centre\ntime = 0.0\n\n",

@@ -1,7 +1,12 @@
 #pragma once
 // The domain box test of the node and particle checks, inline for
 // the node loops that apply it to every node each cycle (fem/fem_package.cpp,
-// solver/solver_checks.cpp).
+// solver/solver_checks.cpp, sph/sph_package.cpp), and how their failure
+// messages write a position.
+#include <fmt/format.h>
+
+#include <string>
+
 #include "model/model.hpp"
 
 namespace camouflet {
@@ -15,6 +20,14 @@ inline int first_outside_domain(const RunControl& run, const double* x) {
           x[i] <= run.domain_max[static_cast<std::size_t>(i)]))
       return i;
   return -1;
+}
+
+// "(x, y[, z]) m" to 6 significant digits.
+template <int D>
+std::string position_text(const double* x) {
+  std::string s = "(";
+  for (int i = 0; i < D; ++i) s += fmt::format("{}{:.6g}", i ? ", " : "", x[i]);
+  return s + ") m";
 }
 
 }  // namespace camouflet

@@ -12,17 +12,6 @@
 
 namespace camouflet {
 
-namespace {
-
-template <int D>
-std::string position_text(const double* x) {
-  std::string s = "(";
-  for (int i = 0; i < D; ++i) s += fmt::format("{}{:.6g}", i ? ", " : "", x[i]);
-  return s + ") m";
-}
-
-}  // namespace
-
 template <int D>
 std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
   if (id < 1) return {};

@@ -9,17 +9,6 @@
 
 namespace camouflet::sph {
 
-namespace {
-
-template <int D>
-std::string position_text(const double* x) {
-  std::string s = "(";
-  for (int i = 0; i < D; ++i) s += fmt::format("{}{:.6g}", i ? ", " : "", x[i]);
-  return s + ") m";
-}
-
-}  // namespace
-
 template <int D>
 SphPackage<D>::SphPackage(const Model& model)
     : model_(model), system_(model, model.sph, symmetry_mirror_planes(model)) {

@@ -49,8 +49,6 @@ class SphFemCoupling {
   // the caller's scope.
   void visit_state(StateVisitor& visitor);
 
-  const SphFemJoin<D>* join() const { return join_.get(); }
-
  private:
   FemPackage<D>& fem_;
   sph::SphPackage<D>& particles_;

@@ -29,6 +29,17 @@ std::vector<MirrorPlane> symmetry_mirror_planes(const Model& model) {
   return planes;
 }
 
+std::vector<MirrorPlane> axis_mirror_planes(GeometryMode mode) {
+  if (mode == GeometryMode::axisymmetric) return {MirrorPlane{0, 0.0, PlaneKind::axis}};
+  return {};
+}
+
+std::vector<MirrorPlane> particle_mirror_planes(const Model& model) {
+  std::vector<MirrorPlane> planes = axis_mirror_planes(model.run.mode);
+  for (const MirrorPlane& plane : symmetry_mirror_planes(model)) planes.push_back(plane);
+  return planes;
+}
+
 template <int D>
 std::vector<Ghost> make_ghosts(std::vector<Vec<D>>& x, std::size_t n_real,
                                const std::vector<MirrorPlane>& planes, double reach) {

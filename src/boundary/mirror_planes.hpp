@@ -70,9 +70,16 @@ inline SymTensor mirror_tensor(SymTensor s, int axis) {
 // The particles' side of the model's symmetry boundaries: each symmetry condition whose normal
 // is a coordinate axis and whose node set lies on one plane constrains its nodes
 // (boundary_conditions.hpp) and mirrors the particles in that plane. Each plane once, however
-// many sets it is split into. The axis of an r-z model is not among them: SphSystem adds it
-// (PlaneKind::axis).
+// many sets it is split into. The axis of an r-z model is not among them.
 std::vector<MirrorPlane> symmetry_mirror_planes(const Model& model);
+
+// The planes of the geometry alone: the axis r = 0 of an r-z model (PlaneKind::axis), none
+// otherwise.
+std::vector<MirrorPlane> axis_mirror_planes(GeometryMode mode);
+
+// Every plane the model's boundaries mirror particles in, in the order their images are made:
+// axis_mirror_planes first, then symmetry_mirror_planes (boundaries.hpp).
+std::vector<MirrorPlane> particle_mirror_planes(const Model& model);
 
 // Ghost list for points x (the first n_real are particles): every point whose
 // distance to a plane is below `reach` (m) is mirrored, planes in order.

@@ -93,7 +93,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
   gather_element_state();
   // The boundary now holds the relaxed state's load, which differs from the initial one where
   // the relaxation moved the soil next to it.
-  hold_transmitting_boundaries(true);
+  boundaries_.hold_initial_state(fem_, model_.run.gravity, model_.run.has_gravity(), true);
   start_energy_and_step();
   return r;
 }

@@ -34,38 +34,17 @@ void Solver<D>::add_gravity() {
 
 template <int D>
 void Solver<D>::add_static_boundary_forces() {
-  // The static load the transmitting boundaries carry (hold_transmitting_boundaries): under
+  // The static load the transmitting boundaries carry (Boundaries::hold_initial_state): under
   // gravity, and after a dynamic relaxation under the t = 0 loads with or without it. Boundaries
-  // that hold nothing have no static forces.
-  if (transmitting_.empty()) return;
-  const double static_work = transmitting_.add_static_forces(fem_.velocity.data(), dt_, fem_.force.data());
+  // that hold nothing add nothing.
+  const double static_work = boundaries_.add_static_forces(fem_, dt_);
   energy_.boundary_work += static_work;
   split_.transmitting += static_work;
-}
-
-template <int D>
-void Solver<D>::hold_transmitting_boundaries(bool relaxed) {
-  // A stress-free start has nothing to hold; a geostatic one under gravity, or a relaxed one
-  // (under gravity or the t = 0 loads alone), has.
-  if (transmitting_.empty() || !(relaxed || model_.run.has_gravity())) return;
-  // Each node's internal force plus its weight in the initial state: what the soil beyond a
-  // transmitting boundary held, which the boundary now holds in its place. A load applied to the
-  // boundary's own nodes is not part of the hold (the dashpots see its effect as motion).
-  std::vector<double> unbalanced(fem_.position.size(), 0.0);
-  if (fem_.elements.area_weighted_momentum()) fem_.elements.update_ring_factors(fem_.position.data());
-  fem_.elements.add_internal_forces(fem_.position.data(), fem_.velocity.data(), unbalanced.data(), nullptr, fem_.hourglass, 0.0);
-  const std::array<double, 3>& g = model_.run.gravity;
-  for (std::size_t n = 0; n < fem_.node_mass.size(); ++n)
-    for (int i = 0; i < D; ++i)
-      unbalanced[n * D + static_cast<std::size_t>(i)] += fem_.node_mass[n] * g[static_cast<std::size_t>(i)];
-  transmitting_.hold_initial_state(unbalanced.data());
 }
 
 template void Solver<2>::add_gravity();
 template void Solver<3>::add_gravity();
 template void Solver<2>::add_static_boundary_forces();
 template void Solver<3>::add_static_boundary_forces();
-template void Solver<2>::hold_transmitting_boundaries(bool);
-template void Solver<3>::hold_transmitting_boundaries(bool);
 
 }  // namespace camouflet

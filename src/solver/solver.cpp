@@ -13,14 +13,13 @@ namespace camouflet {
 
 template <int D>
 Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode), fem_(model) {
-  boundaries_ = BoundaryConditions<D>(model);
-  boundaries_.constrain(fem_.velocity.data(), 0.0);
-  transmitting_ = TransmittingBoundary<D>(model, fem_.elements);
+  boundaries_ = Boundaries<D>(model, fem_);
+  boundaries_.constrain(fem_.velocity, 0.0);
 
-  // SPH particles: same materials, own batches (sph/sph_package.hpp); symmetry
-  // boundaries on axis-aligned planes reflect particles too.
+  // SPH particles: same materials, own batches (sph/sph_package.hpp), mirrored in the planes the
+  // boundaries give them.
   if (model.particles.count() > 0) {
-    auto particles = std::make_unique<sph::SphPackage<D>>(model);
+    auto particles = std::make_unique<sph::SphPackage<D>>(model, boundaries_.mirror_planes());
     coupling_ = std::make_unique<SphFemCoupling<D>>(model, fem_, *particles);
     particles->add_forces(0.0);
     sph_ = particles.get();
@@ -33,7 +32,8 @@ Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode), fe
   // (the kinematics that measure |v| have not run yet).
   fem_.elements.set_speeds(fem_.velocity.data());
   gather_element_state();
-  hold_transmitting_boundaries();  // needs the initial stresses gathered above
+  // The transmitting boundaries' static load, from the initial stresses gathered above.
+  boundaries_.hold_initial_state(fem_, model.run.gravity, model.run.has_gravity(), false);
   start_energy_and_step();
 }
 
@@ -42,7 +42,7 @@ void Solver<D>::set_initial_velocity(const std::vector<double>& v) {
   if (cycle_ != 0 || v.size() != fem_.velocity.size())
     throw std::logic_error("set_initial_velocity: before the first step, one value per node and component");
   fem_.velocity = v;
-  boundaries_.constrain(fem_.velocity.data(), 0.0);
+  boundaries_.constrain(fem_.velocity, 0.0);
   fem_.elements.set_speeds(fem_.velocity.data());
   nodes_checked_cycle_ = -1;
   start_energy_and_step();
@@ -123,28 +123,20 @@ template <int D>
 void Solver<D>::add_element_forces() {
   // Loads first, then the elements' forces: each node's force sums them in that order.
   const double* ring_factor = fem_.begin_forces();
-  boundaries_.add_loads(fem_.position.data(), time_, fem_.force.data(), ring_factor);
+  boundaries_.add_loads(fem_, time_, ring_factor);
   fem_.add_element_forces(dt_);
 }
 
 template <int D>
 void Solver<D>::constrain_velocities() {
   const double dt_mean = centred_step();
-  // Transmitting boundaries first: centred dashpots on v(n+1/2) (boundary/transmitting_boundary.hpp).
   if (relaxing_) hold_charges_still();
-  if (!transmitting_.empty() && relaxing_) {
-    transmitting_.hold_still(fem_.velocity.data());
-  } else if (!transmitting_.empty()) {
-    const double damping_work = transmitting_.damp(fem_.position.data(), fem_.velocity_old.data(), fem_.velocity.data(),
-                                                   fem_.node_mass.data(), fem_.elements, fem_.batches, dt_mean);
-    energy_.boundary_work += damping_work;
-    split_.transmitting += damping_work;
-  }
-  const double reaction_work = boundaries_.constrain(fem_.velocity.data(), fem_.velocity_old.data(),
-                                                     fem_.node_mass.data(), time_ + 0.5 * dt_next_, dt_, dt_mean);
-  const double constraint_work = reaction_work + boundaries_.load_work(fem_.velocity_old.data(), dt_);
-  energy_.boundary_work += constraint_work;
-  split_.constraints += constraint_work;
+  // Dashpots, then fixed, prescribed, symmetry and axis nodes (boundary/boundaries.hpp).
+  const typename Boundaries<D>::Work work = boundaries_.constrain(fem_, time_ + 0.5 * dt_next_, dt_, dt_mean, relaxing_);
+  energy_.boundary_work += work.transmitting;
+  split_.transmitting += work.transmitting;
+  energy_.boundary_work += work.constraints;
+  split_.constraints += work.constraints;
   if (coupling_) {  // the join settles; its work and the contact's (coupling/sph_fem_coupling.hpp)
     const typename SphFemCoupling<D>::Powers powers = coupling_->settle(dt_mean);
     split_.join_face += powers.join_face_work;

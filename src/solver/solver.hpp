@@ -16,10 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "boundary/boundary_conditions.hpp"
+#include "boundary/boundaries.hpp"
 #include "core/state_visitor.hpp"
 #include "coupling/sph_fem_coupling.hpp"
-#include "boundary/transmitting_boundary.hpp"
 #include "fem/fem_package.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
@@ -137,8 +136,6 @@ class Solver {
   void add_coupling_forces();
   void add_gravity();  // the body force m g and its work (solver/gravity.cpp)
   void add_static_boundary_forces();  // the transmitting boundaries' static load and its work (gravity.cpp)
-  // Their static load at t = 0: under gravity, or after a relaxation (`relaxed`) (gravity.cpp).
-  void hold_transmitting_boundaries(bool relaxed = false);
   void constrain_velocities();
   void drift_nodes_and_account_energy();
   void advance_clock();        // dt, time and cycle move on to the step just taken
@@ -190,8 +187,8 @@ class Solver {
   std::int64_t first_axis_node_ = 0, first_axis_cycle_ = -1;  // see first_axis_crossing_node()
   std::vector<char> axis_reported_;                           // per node: its crossing was reported
   int axis_reports_ = 0;
-  BoundaryConditions<D> boundaries_;
-  TransmittingBoundary<D> transmitting_;  // Lysmer-Kuhlemeyer dashpots (coupling/)
+  // Node constraints, loads, dashpots and the particles' mirror planes (boundary/boundaries.hpp).
+  Boundaries<D> boundaries_;
 
   double time_ = 0.0;
   std::int64_t cycle_ = 0;

@@ -47,8 +47,7 @@ void Solver<D>::visit_state(StateVisitor& v) {
   visit(v, "hourglass_dissipated", fem_.hourglass_dissipated);
 
   fem_.visit_state(v);  // nodes, elements, material batches (the bars come after the particles)
-  boundaries_.visit_state(v);
-  transmitting_.visit_state(v);
+  boundaries_.visit_state(v);  // loads, reactions, the transmitting boundaries' static hold
   visit_package_state(v);  // each in its own scope (SPH: "sph")
   fem_.bars.visit_state(v);
   // The join's interface is a function of the eroded flags (coupling/join_erosion.cpp).

@@ -4,14 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "model/domain_box.hpp"
 
 namespace camouflet::sph {
 
 template <int D>
-SphPackage<D>::SphPackage(const Model& model)
-    : model_(model), system_(model, model.sph, symmetry_mirror_planes(model)) {
+SphPackage<D>::SphPackage(const Model& model, std::vector<MirrorPlane> planes)
+    : model_(model), system_(model, model.sph, std::move(planes)) {
   if (model.run.mode == GeometryMode::axisymmetric && !model.sph.volume_form)
     fmt::print(stderr,
                "warning: [sph] volume_form = false in r-z: the particle columns next to the axis feel a "

@@ -17,9 +17,10 @@ namespace camouflet::sph {
 template <int D>
 class SphPackage final : public Package<D> {
  public:
-  // The particles of model.particles with the mirror planes of its symmetry
-  // conditions (the axis of an r-z model is added by the system itself).
-  explicit SphPackage(const Model& model);
+  // The particles of model.particles, mirrored in the planes the model's boundaries give them
+  // (Boundaries::mirror_planes, boundary/boundaries.hpp: the axis of an r-z model and the
+  // symmetry planes).
+  SphPackage(const Model& model, std::vector<MirrorPlane> planes);
 
   SphSystem<D>& system() { return system_; }
   const SphSystem<D>& system() const { return system_; }

@@ -34,9 +34,6 @@ SphSystem<D>::SphSystem(const Model& model, const SphOptions& options, std::vect
   const double power = options_.artificial_stress_power;
   if (power >= 1.0 && power <= 8.0 && power == std::floor(power))
     tensile_power_integer_ = static_cast<int>(power);
-  // The axis of revolution r = 0 reflects particles (boundary/mirror_planes.hpp).
-  if (mode_ == GeometryMode::axisymmetric)
-    planes_.insert(planes_.begin(), MirrorPlane{0, 0.0, PlaneKind::axis});
 
   const auto& src = model.particles;
   const std::size_t n = src.count();

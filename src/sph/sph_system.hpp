@@ -109,17 +109,19 @@ template <int D>
 class SphSystem {
  public:
   // Particles from model.particles (their parts give material and initial
-  // velocity; mass = reference density x volume), mirror planes from the caller
-  // (the axis r = 0 is added automatically in axisymmetric mode).
-  SphSystem(const Model& model, const SphOptions& options, std::vector<MirrorPlane> planes = {});
+  // velocity; mass = reference density x volume), mirrored in `planes`, in their order (the
+  // model's: particle_mirror_planes, boundary/boundaries.hpp; the axis of an r-z model among
+  // them). The two-argument form mirrors in the planes of the geometry alone (the axis in r-z).
+  SphSystem(const Model& model, const SphOptions& options, std::vector<MirrorPlane> planes);
+  SphSystem(const Model& model, const SphOptions& options)
+      : SphSystem(model, options, axis_mirror_planes(model.run.mode)) {}
 
   std::size_t size() const { return p_.real; }
   ParticleArrays<D>& particles() { return p_; }
   const ParticleArrays<D>& particles() const { return p_; }
   GeometryMode mode() const { return mode_; }
   const SphOptions& options() const { return options_; }
-  // The planes the particles are mirrored in, in the order their images are made: the axis of
-  // an r-z model first, then the caller's.
+  // The planes the particles are mirrored in, in the order their images are made.
   const std::vector<MirrorPlane>& mirror_planes() const { return planes_; }
 
   // --- stages of the cycle ---

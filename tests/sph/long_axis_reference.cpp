@@ -105,7 +105,7 @@ ColumnMotion run_column_motion(double cfl) {
   const Model model = buried_charge_model<D>();
   SphOptions options;
   options.viscosity_alpha = 0.2;  // as the generated buried cases
-  std::vector<MirrorPlane> planes;
+  std::vector<MirrorPlane> planes = axis_mirror_planes(model.run.mode);  // r-z: the axis
   if constexpr (D == 3) planes = {{0, 0.0, PlaneKind::symmetry}, {1, 0.0, PlaneKind::symmetry}};
   SphSystem<D> sph(model, options, planes);
   const double e0 = sph.kinetic_energy() + sph.internal_energy();

@@ -106,7 +106,8 @@ std::map<int, ColumnMotion> plane_shock_columns(double speed, double t_end) {
   const double dx = 0.02, radius = 0.2;
   test::add_sph_part(model, "gas", test::ideal_gas("gas", 1000.0, 1.4, 1e5),
                      test::box_fill({0, 0, 0}, {radius, 2, 0}, dx));
-  SphSystem<2> sph(model, SphOptions{}, {sph::MirrorPlane{0, radius, sph::PlaneKind::symmetry}});
+  SphSystem<2> sph(model, SphOptions{},
+                  {sph::MirrorPlane{0, 0.0, sph::PlaneKind::axis}, sph::MirrorPlane{0, radius, sph::PlaneKind::symmetry}});
   auto& p = sph.particles();
   for (std::size_t i = 0; i < sph.size(); ++i)
     if (p.position[i][1] > 1.6) p.velocity[i][1] = -speed;

@@ -4,7 +4,7 @@ namespace camouflet {
 
 template <int D>
 SphFemCoupling<D>::SphFemCoupling(const Model& model, FemPackage<D>& fem, sph::SphPackage<D>& particles)
-    : fem_(fem), particles_(particles) {
+    : fem_(fem), particles_(particles), eroded_seen_(fem.eroded_count) {
   if (!model.joins.empty()) {
     // The coupling points are mirrored in the particles' planes, in their order.
     join_ = std::make_unique<SphFemJoin<D>>(model, fem.elements, fem.position.data(), fem.velocity.data(),

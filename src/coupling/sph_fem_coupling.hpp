@@ -40,8 +40,14 @@ class SphFemCoupling {
   };
   Powers settle(double dt_mean);
 
-  // After FEM elements eroded, and after a restore: the join's interface as the erosion leaves it.
+  // After the packages' update: when FEM elements eroded (its eroded_count moved on), the join's
+  // interface as the erosion leaves it.
+  void follow_packages() {
+    if (fem_.eroded_count != eroded_seen_) follow_erosion();
+  }
+  // After a restore: the join's interface as the restored erosion leaves it.
   void follow_erosion() {
+    eroded_seen_ = fem_.eroded_count;
     if (join_) join_->follow_erosion();
   }
 
@@ -56,6 +62,7 @@ class SphFemCoupling {
   SlidingContact<D> contact_;
   double join_power_ = 0.0;     // W, pair work across the join that no internal energy books
   double contact_power_ = 0.0;  // W, power of the contact forces
+  std::size_t eroded_seen_ = 0;  // the FEM package's eroded_count the join last followed
 };
 
 extern template class SphFemCoupling<2>;

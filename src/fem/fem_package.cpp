@@ -13,13 +13,14 @@
 namespace camouflet {
 
 template <int D>
-const double* FemPackage<D>::begin_forces() {
+void FemPackage<D>::begin_step(const StepClock&) {
   // The node passes of the previous step zeroed force and hourglass_force_previous as they read
   // them for the last time (forces_zeroed); otherwise zero them here.
   if (!forces_zeroed) std::fill(force.begin(), force.end(), 0.0);
-  if (!elements.area_weighted_momentum()) return nullptr;
+  ring_factor_ = nullptr;
+  if (!elements.area_weighted_momentum()) return;
   elements.update_ring_factors(position.data());
-  return elements.ring_factors().data();
+  ring_factor_ = elements.ring_factors().data();
 }
 
 template <int D>
@@ -41,7 +42,7 @@ void FemPackage<D>::add_bar_forces() {
 }
 
 template <int D>
-void FemPackage<D>::kick(double dt_mean) {
+void FemPackage<D>::kick_nodes(double dt_mean) {
   const std::int64_t nn = static_cast<std::int64_t>(node_mass.size());
 #pragma omp parallel for schedule(static) if (nn > parallel_threshold_nodes)
   for (std::int64_t n = 0; n < nn; ++n) {
@@ -59,7 +60,7 @@ void FemPackage<D>::kick(double dt_mean) {
 }
 
 template <int D>
-typename FemPackage<D>::Drift FemPackage<D>::drift(double dt_minus, double dt_mean, double dt) {
+typename FemPackage<D>::Drift FemPackage<D>::drift_nodes(double dt_minus, double dt_mean, double dt) {
   // Kinetic energy at t_n in the form the central difference conserves:
   // (1/2) m (v_n^2 - a^2 dt-^2 / 4) with v_n = v(n-1/2) + a dt- / 2 and a the
   // applied (constrained) acceleration; for equal steps it is (1/2) m
@@ -196,7 +197,7 @@ typename FemPackage<D>::State FemPackage<D>::gather_state() {
 }
 
 template <int D>
-typename FemPackage<D>::Vote FemPackage<D>::element_vote() const {
+typename FemPackage<D>::ElementVote FemPackage<D>::element_vote() const {
   const std::int64_t ne = static_cast<std::int64_t>(elements.size());
   double best = std::numeric_limits<double>::infinity();
   std::int64_t best_e = -1;

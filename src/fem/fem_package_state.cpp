@@ -1,6 +1,6 @@
-// FemPackage::visit_state: the nodes, elements and material batches by name
-// (core/state_visitor.hpp), in the order of the solver's checkpoint layout
-// (solver/solver_state.cpp calls it between its scalars and the boundaries).
+// FemPackage::visit_state: the nodes, elements, material batches, erosion and hourglass sums
+// and the embedded bars by name (core/state_visitor.hpp), in the driver's scope: the names
+// are those of the checkpoints written before FEM was a package (solver/solver_state.cpp).
 #include "fem/fem_package.hpp"
 #include "materials/material_points_state.hpp"
 
@@ -45,6 +45,15 @@ void FemPackage<D>::visit_state(StateVisitor& v) {
     StateScope batch(v, "batch" + std::to_string(m));
     camouflet::visit_state(v, batches[m]);
   }
+  visit(v, "eroded_count", eroded_count);
+  visit(v, "hourglass_stored", hourglass_stored);
+  visit(v, "hourglass_dissipated", hourglass_dissipated);
+  bars.visit_state(v);
+  // A restored state is checked again by the next step, and its force arrays zeroed by
+  // begin_step (a checkpoint holds the forces of its last step). Its internal energy is the
+  // driver's restored balance until the next update gathers it.
+  forces_zeroed = false;
+  nodes_checked_ = false;
 }
 
 template void FemPackage<2>::visit_state(StateVisitor&);

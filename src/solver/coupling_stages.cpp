@@ -11,14 +11,14 @@ void Solver<D>::add_coupling_forces() {
 }
 
 template <int D>
-void Solver<D>::erode_elements() {
+void Solver<D>::follow_packages() {
   // The SPH-FEM interface loses the eroded elements' faces and gains those they exposed.
-  if (fem_.erode(dt_, energy_.eroded) && coupling_) coupling_->follow_erosion();
+  if (coupling_) coupling_->follow_packages();
 }
 
 template void Solver<2>::add_coupling_forces();
 template void Solver<3>::add_coupling_forces();
-template void Solver<2>::erode_elements();
-template void Solver<3>::erode_elements();
+template void Solver<2>::follow_packages();
+template void Solver<3>::follow_packages();
 
 }  // namespace camouflet

@@ -30,14 +30,6 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
   relaxation_held_materials_.assign(model_.materials.size(), 0);
   for (std::size_t m = 0; m < model_.materials.size(); ++m)
     relaxation_held_materials_[m] = model_.materials[m].material->eos().programmed_burn() ? 1 : 0;
-  relaxation_held_nodes_.clear();
-  constexpr int N = FemElements<D>::nodes;
-  for (std::size_t e = 0; e < fem_.elements.size(); ++e)
-    if (relaxation_held_materials_[static_cast<std::size_t>(fem_.elements.material[e])])
-      for (int a = 0; a < N; ++a) relaxation_held_nodes_.push_back(fem_.elements.connectivity[e * N + a]);
-  std::sort(relaxation_held_nodes_.begin(), relaxation_held_nodes_.end());
-  relaxation_held_nodes_.erase(std::unique(relaxation_held_nodes_.begin(), relaxation_held_nodes_.end()),
-                               relaxation_held_nodes_.end());
   relaxing_ = true;
   while (true) {
     // Each cycle ends on t = 0: programmed burns stay unlit and time-dependent loads hold their
@@ -47,8 +39,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
     ++r.cycles;
     r.time += dt_;
     const double factor = std::exp(-rate * dt_);
-    for (double& v : fem_.velocity) v *= factor;
-    for (const auto& package : packages_) package->scale_velocities(factor);
+    for (Package<D>* package : packages_) package->scale_velocities(factor);
     const double kinetic = energy_.kinetic;  // at t_n of this cycle, before its damping
     r.peak_kinetic = std::max(r.peak_kinetic, kinetic);
     r.kinetic_ratio = r.peak_kinetic > 0.0 ? kinetic / r.peak_kinetic : 0.0;
@@ -77,20 +68,16 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
 
   // At rest where it stands: the transient counts its displacements, time, cycles and energy
   // from here.
-  for (auto* field : {&fem_.velocity, &fem_.velocity_old, &fem_.acceleration, &fem_.displacement})
-    std::fill(field->begin(), field->end(), 0.0);
-  for (const auto& package : packages_) package->come_to_rest();
+  for (Package<D>* package : packages_) package->come_to_rest();
   time_ = 0.0;
   cycle_ = 0;
   dt_ = 0.0;
-  nodes_checked_cycle_ = -1;
   energy_ = EnergyBalance{};
   EnergySplit fresh;
   for (const auto& share : split_.packages) fresh.packages.push_back({share.name});
   split_ = fresh;
-  fem_.hourglass_dissipated = 0.0;
-  fem_.elements.set_speeds(fem_.velocity.data());
-  gather_element_state();
+  fem_.start();
+  gather_energies();
   // The boundary now holds the relaxed state's load, which differs from the initial one where
   // the relaxation moved the soil next to it.
   boundaries_.hold_initial_state(fem_, model_.run.gravity, model_.run.has_gravity(), true);
@@ -98,15 +85,6 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
   return r;
 }
 
-template <int D>
-void Solver<D>::hold_charges_still() {
-  for (const std::int64_t n : relaxation_held_nodes_)
-    for (int i = 0; i < D; ++i) fem_.velocity[static_cast<std::size_t>(n * D + i)] = 0.0;
-  for (const auto& package : packages_) package->hold_still(relaxation_held_materials_);
-}
-
-template void Solver<2>::hold_charges_still();
-template void Solver<3>::hold_charges_still();
 template Solver<2>::Relaxation Solver<2>::relax(const RunControl::DynamicRelaxation&,
                                                 const std::function<void(const Relaxation&)>&);
 template Solver<3>::Relaxation Solver<3>::relax(const RunControl::DynamicRelaxation&,

@@ -1,9 +1,8 @@
-// Gravity: the body force m g on every node and every package's points, and the static load that transmitting
+// Gravity: the body force m g on every package's points, and the static load that transmitting
 // boundaries carry under it or after a dynamic relaxation (docs/theory/gravity.md).
 #include <cstddef>
 #include <cstdint>
 
-#include "fem/parallel.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -11,22 +10,11 @@ namespace camouflet {
 template <int D>
 void Solver<D>::add_gravity() {
   if (!model_.run.has_gravity()) return;
-  const std::array<double, 3>& g = model_.run.gravity;
-  // The work of the constant force over the step t_(n-1) -> t_n is m g . v(n-1/2) dt(n-1/2),
-  // exactly m g . (x_n - x_(n-1)): the booked work is the loss of potential energy, the form the
-  // central difference's kinetic energy at t_n balances. fem_.velocity still holds v(n-1/2) here.
-  const std::int64_t nn = static_cast<std::int64_t>(fem_.node_mass.size());
+  // Each package adds m g to its points and m g . v(n-1/2) to one running sum (FEM's nodes
+  // first): the work of the constant force over the step t_(n-1) -> t_n is that power times
+  // dt(n-1/2), exactly m g . (x_n - x_(n-1)), the potential energy given up.
   double power = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : power) if (nn > parallel_threshold_nodes)
-  for (std::int64_t n = 0; n < nn; ++n) {
-    const double m = fem_.node_mass[static_cast<std::size_t>(n)];
-    for (int i = 0; i < D; ++i) {
-      const std::size_t k = static_cast<std::size_t>(n * D + i);
-      fem_.force[k] += m * g[static_cast<std::size_t>(i)];
-      power += m * g[static_cast<std::size_t>(i)] * fem_.velocity[k];
-    }
-  }
-  add_package_gravity(g, power);  // the particles' and any other package's points, into the same sum
+  for (Package<D>* package : packages_) package->add_gravity(model_.run.gravity, power);
   const double work = power * dt_;
   energy_.boundary_work += work;
   split_.gravity += work;

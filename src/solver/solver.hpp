@@ -3,13 +3,12 @@
 // over FEM elements and SPH particles, driven one step at a time. run_model()
 // drives it to the end time with output; tests drive it cycle by cycle.
 //
-// step() lists its stages. The FEM package (fem/fem_package.hpp) owns the
-// nodes, elements, their material batches and bars, and is called by name at
-// its stages; every other method is a Package<D> (model/package.hpp) in
-// packages_, the SPH particles (sph/sph_package.hpp) first, and each stage
-// loops over them. The join and the contact (coupling/) act between FEM and
-// SPH. The solver keeps the clock, the step, the energy balance, the
-// boundaries and the couplings.
+// step() lists its stages, each a loop over the packages (model/package.hpp):
+// FEM (fem/fem_package.hpp), the SPH particles (sph/sph_package.hpp) when the
+// model has any, then those registered with add_package. Between them act the
+// boundaries (boundary/boundaries.hpp) and the couplings between FEM and SPH
+// (coupling/). The solver keeps the clock, the step, the energy balance and
+// the failure diagnostics.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -63,8 +62,9 @@ class Solver {
   Relaxation relax(const RunControl::DynamicRelaxation& relaxation,
                    const std::function<void(const Relaxation&)>& after_cycle = {});
 
-  // Before the first step: a further method, run after FEM and SPH at every stage of step()
-  // (model/package.hpp; solver/package_stages.cpp): its forces, gravity with its work, kick,
+  // Before the first step: a further method, run after FEM and SPH at the force stages and the
+  // kick and before them at the drift and the update, as model/package.hpp orders the stages
+  // (solver/package_stages.cpp): its forces, gravity with its work, kick,
   // drift with its kinetic energy in the balance, state update, internal energy, vote for the
   // step, checks and checkpoint state. relax() refuses to run with a package that is not
   // damped (Package::relaxes). Throws std::logic_error after the first step or for a name
@@ -80,12 +80,13 @@ class Solver {
   // 2-D: the first element found tangled (edges crossed, area still positive; fem_elements.hpp),
   // 1-based, and the cycle it was found at; 0 and -1 while none was. Reported on stderr, not
   // fatal (docs/reliability.md).
-  std::int64_t first_tangled_element() const { return first_tangled_element_; }
-  std::int64_t first_tangled_cycle() const { return first_tangled_cycle_; }
+  std::int64_t first_tangled_element() const { return fem_.reports().first_tangled_element; }
+  std::int64_t first_tangled_cycle() const { return fem_.reports().first_tangled_cycle; }
   // r-z: the first node found at r < 0 after moving inwards (crossed the axis), 1-based, and the
-  // cycle; 0 and -1 while none did. Reported on stderr like a tangled element (solver_checks.cpp).
-  std::int64_t first_axis_crossing_node() const { return first_axis_node_; }
-  std::int64_t first_axis_crossing_cycle() const { return first_axis_cycle_; }
+  // cycle; 0 and -1 while none did. Reported on stderr like a tangled element
+  // (fem/fem_package_stages.cpp).
+  std::int64_t first_axis_crossing_node() const { return fem_.reports().first_axis_node; }
+  std::int64_t first_axis_crossing_cycle() const { return fem_.reports().first_axis_cycle; }
   const TimeStepLimit& time_step_limit() const { return limit_; }
   const EnergyBalance& energy() const { return energy_; }
   // Where the energy sits and what the boundary work is made of (energy.csv).
@@ -115,7 +116,7 @@ class Solver {
   const std::vector<double>& position() const { return fem_.position; }
   const std::vector<double>& velocity() const { return fem_.velocity; }
   std::vector<double>& velocity() {  // tests impose initial fields
-    nodes_checked_cycle_ = -1;       // so the next step checks them
+    fem_.mark_nodes_unchecked();     // so the next step checks them
     return fem_.velocity;
   }
   const std::vector<double>& displacement() const { return fem_.displacement; }
@@ -130,81 +131,56 @@ class Solver {
   std::size_t eroded_count() const { return fem_.eroded_count; }
 
  private:
-  // Stages of step(), in order (the FEM and coupling parts of each stage by name, the
-  // packages' in package_stages.cpp).
-  void add_element_forces();
+  // Stages of step() that are not loops over the packages, in order (the loops are in
+  // package_stages.cpp, the couplings' in coupling_stages.cpp).
   void add_coupling_forces();
-  void add_gravity();  // the body force m g and its work (solver/gravity.cpp)
+  void add_gravity();                 // the body force m g on every package's points, its work (gravity.cpp)
   void add_static_boundary_forces();  // the transmitting boundaries' static load and its work (gravity.cpp)
-  void constrain_velocities();
-  void drift_nodes_and_account_energy();
-  void advance_clock();        // dt, time and cycle move on to the step just taken
-  void check_drifted_nodes();  // the first node the drift found non-finite or outside the box stops the run
+  void constrain_velocities();        // boundaries on v(n+1/2); the couplings settle
+  void account_energy();              // the balance at t_n, once every package has drifted
+  void follow_packages();             // the couplings follow the packages' erosion
+  void gather_energies();             // the packages' internal energy at t_(n+1) and the shares
+  void choose_time_step();            // dt(n+3/2) = CFL min over the packages' votes, growth limited
+  void advance_clock();               // dt, time and cycle move on to the step just taken
+  StepClock clock() const { return {cycle_, time_, dt_, dt_next_}; }
   // t_(n+1/2) - t_(n-1/2): the interval of the velocity update at t_n (central difference).
-  double centred_step() const { return 0.5 * (dt_ + dt_next_); }
-  void element_kinematics();
-  void gather_element_state();
-  void choose_time_step();
+  double centred_step() const { return clock().dt_mean(); }
   void start_energy_and_step();  // the first step's vote and the initial energy (constructor, set_initial_velocity)
-  void erode_elements();  // FEM erosion, which the join follows (coupling_stages.cpp)
-  // The packages' parts of the stages, each a loop over packages_ in order (package_stages.cpp).
+  // The packages' stages, each a loop over packages_ (package_stages.cpp).
   void register_package(std::unique_ptr<Package<D>> package);
+  void begin_packages();
   void add_package_forces();
-  void add_package_gravity(const std::array<double, 3>& g, double& power);
   void kick_packages();
-  void drift_packages();
-  void update_packages();
+  void drift_packages();   // reverse order; their centred kinetic energies into split_
   void check_packages() const;
-  double package_internal_energy();  // and the shares in split_
+  void update_packages();  // reverse order
   double package_kinetic_energy() const;
-  void vote_packages(double& dt, std::string& reason) const;
-  std::string describe_package_point(EntityKind kind, std::int64_t id) const;
+  std::string describe(EntityKind kind, std::int64_t id) const;  // the first package that knows the point
   void visit_package_state(StateVisitor& visitor);
 
   [[noreturn]] void fail(NumericalError error) const;
-  // Numerical-failure diagnostics (solver_checks.cpp): a node or particle outside the
-  // domain box or with a non-finite position or velocity stops the run; an
-  // entity is described by material and position in every failure message.
-  void check_nodes_and_packages() const;
-  [[noreturn]] void fail_node(std::int64_t n) const;  // 0-based; non-finite or outside the box
-  void check_axis_crossings();                        // r-z: nodes moved to r < 0, reported (a warning)
-  std::string describe(EntityKind kind, std::int64_t id) const;
 
   const Model& model_;
   GeometryMode mode_;
 
   FemPackage<D> fem_;  // nodes, elements, material batches, bars, erosion (fem/)
-  // Every method but FEM, in the order of their stages: the SPH particles first (when the
-  // model has any), then those registered with add_package.
-  std::vector<std::unique_ptr<Package<D>>> packages_;
+  // Every method in the order of their stages: FEM, the SPH particles (when the model has any),
+  // then those registered with add_package. FEM is a member (the boundaries and the couplings
+  // hold it); the others are owned here.
+  std::vector<Package<D>*> packages_;
+  std::vector<std::unique_ptr<Package<D>>> owned_packages_;
   sph::SphPackage<D>* sph_ = nullptr;  // the particle package in packages_ (particles())
-  double package_kinetic_ = 0.0;       // J, the packages' centred kinetic energy at t_n
   // The join and the contact between the particles and FEM (coupling/); null without particles.
   std::unique_ptr<SphFemCoupling<D>> coupling_;
-  std::int64_t first_tangled_element_ = 0, first_tangled_cycle_ = -1;  // see first_tangled_element()
-  std::int64_t last_tangled_element_ = 0;
-  int tangled_reports_ = 0;                                   // warnings printed (at most 20)
-  std::int64_t first_axis_node_ = 0, first_axis_cycle_ = -1;  // see first_axis_crossing_node()
-  std::vector<char> axis_reported_;                           // per node: its crossing was reported
-  int axis_reports_ = 0;
   // Node constraints, loads, dashpots and the particles' mirror planes (boundary/boundaries.hpp).
   Boundaries<D> boundaries_;
 
   double time_ = 0.0;
   std::int64_t cycle_ = 0;
-  // The cycle whose end state (x(n+1), v(n+1/2)) the node pass of
-  // drift_nodes_and_account_energy found finite and inside the domain
-  // box; -1 once anything else may have written the nodes (the non-const
-  // velocity(), visit_state). A FEM-only step skips its start check of the
-  // nodes while this equals cycle_: nothing writes them in between.
-  std::int64_t nodes_checked_cycle_ = -1;
-  std::int64_t drifted_bad_node_ = -1;  // the drift's first failed node (0-based), -1: none
   bool relaxing_ = false;  // in relax(): transmitting boundaries hold their nodes still
-  // In relax(): the nodes and particle materials of explosives under programmed burn, held still
-  // (EquationOfState::programmed_burn).
-  std::vector<std::int64_t> relaxation_held_nodes_;
+  // In relax(): the materials of explosives under programmed burn, whose nodes and particles are
+  // held still (EquationOfState::programmed_burn).
   std::vector<char> relaxation_held_materials_;
-  void hold_charges_still();  // dynamic_relaxation.cpp
   double dt_ = 0.0;       // s, the step just taken (t_{n-1/2})
   double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
   TimeStepLimit limit_;

@@ -11,8 +11,6 @@ namespace camouflet {
 template <int D>
 void Solver<D>::visit_state(StateVisitor& v) {
   StateScope scope(v, "solver");
-  nodes_checked_cycle_ = -1;    // a restored state is checked again by the next step
-  fem_.forces_zeroed = false;  // and its force arrays zeroed by add_element_forces
   visit(v, "time", time_);
   visit(v, "cycle", cycle_);
   visit(v, "dt", dt_);
@@ -40,16 +38,13 @@ void Solver<D>::visit_state(StateVisitor& v) {
   }
   visit(v, "energy_split.bar_internal", split_.bar_internal);
   visit(v, "energy_split.gravity", split_.gravity);
-  visit(v, "eroded_count", fem_.eroded_count);
   if (coupling_) coupling_->visit_state(v);  // join_power, contact_power
   visit(v, "internal_energy", internal_energy_);
-  visit(v, "hourglass_stored", fem_.hourglass_stored);
-  visit(v, "hourglass_dissipated", fem_.hourglass_dissipated);
 
-  fem_.visit_state(v);  // nodes, elements, material batches (the bars come after the particles)
+  // FEM in the solver's scope (its names predate the packages), each other package in its own
+  // (SPH: "sph"); then the boundaries.
+  visit_package_state(v);
   boundaries_.visit_state(v);  // loads, reactions, the transmitting boundaries' static hold
-  visit_package_state(v);  // each in its own scope (SPH: "sph")
-  fem_.bars.visit_state(v);
   // The join's interface is a function of the eroded flags (coupling/join_erosion.cpp).
   if (coupling_ && v.loading()) coupling_->follow_erosion();
 }

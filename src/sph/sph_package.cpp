@@ -21,7 +21,7 @@ SphPackage<D>::SphPackage(const Model& model, std::vector<MirrorPlane> planes)
 }
 
 template <int D>
-void SphPackage<D>::add_forces(double) {
+void SphPackage<D>::add_forces(const StepClock&) {
   system_.compute_accelerations();  // sets the accelerations: the couplings and gravity add after it
 }
 
@@ -36,10 +36,10 @@ void SphPackage<D>::add_gravity(const std::array<double, 3>& g, double& power) {
 }
 
 template <int D>
-double SphPackage<D>::drift(double dt) {
+double SphPackage<D>::drift(const StepClock& clock) {
   // The kinetic energy at t_n in the centred form, before the particles move.
   const double kinetic = system_.centred_kinetic_energy();
-  system_.drift(dt);
+  system_.drift(clock.dt_next);
   return kinetic;
 }
 

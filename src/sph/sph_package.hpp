@@ -26,15 +26,16 @@ class SphPackage final : public Package<D> {
   const SphSystem<D>& system() const { return system_; }
 
   std::string name() const override { return "sph"; }
-  void add_forces(double time) override;
+  void add_forces(const StepClock& clock) override;
   void add_gravity(const std::array<double, 3>& g, double& power) override;
-  void kick(double dt_mean) override { system_.kick(dt_mean); }
-  double drift(double dt) override;
-  void update_state(double dt, double time) override { system_.update_state(dt, time); }
+  void kick(const StepClock& clock) override { system_.kick(clock.dt_mean()); }
+  double drift(const StepClock& clock) override;
+  void check() const override;
+  // The particles' state at t_(n+1); their viscous heating is in their internal energy already.
+  void update_state(const StepClock& clock, EnergyBalance&) override { system_.update_state(clock.dt, clock.time); }
   typename Package<D>::Vote vote() const override;
   double kinetic_energy() const override { return system_.kinetic_energy(); }
   double internal_energy() const override { return system_.internal_energy(); }
-  void check() const override;
   std::string describe(EntityKind kind, std::int64_t id) const override;
   void fill_snapshot(FieldSnapshot& snapshot) const override { system_.fill_snapshot(snapshot); }
   void visit_state(StateVisitor& visitor) override { system_.visit_state(visitor); }

@@ -146,4 +146,29 @@ TEST(Layers, SolverStagesReachTheParticlesOnlyAsAPackage) {
   EXPECT_GT(files, 5) << "no sources found under " << solver;
 }
 
+TEST(Layers, StepCallsNoMethodByName) {
+  // step() is the list of stages, each a loop over the packages (docs/architecture.md, "The
+  // explicit cycle"): inside Solver<D>::step the FEM package is named only as what the
+  // boundaries act on, never called at a stage of its own.
+  std::ifstream in(fs::path(CAMOUFLET_SOURCE_DIR) / "src" / "solver" / "solver.cpp");
+  std::string text;
+  int line = 0, body_lines = 0;
+  bool inside = false;
+  while (std::getline(in, text)) {
+    ++line;
+    if (text.rfind("void Solver<D>::step() {", 0) == 0) {
+      inside = true;
+      continue;
+    }
+    if (!inside) continue;
+    if (text.rfind("}", 0) == 0) break;  // the function's closing brace
+    ++body_lines;
+    for (const char* name : {"fem_", "sph_", "coupling_->"})
+      if (text.find(name) != std::string::npos && text.find("boundaries_.") == std::string::npos)
+        ADD_FAILURE() << "src/solver/solver.cpp:" << line << ": step() names " << name << " outside a boundary call: "
+                      << text;
+  }
+  EXPECT_GT(body_lines, 10) << "Solver<D>::step() not found in src/solver/solver.cpp";
+}
+
 }  // namespace

@@ -40,7 +40,7 @@ class RigidPoints : public Package<D> {
       side_.push_back(x_[static_cast<std::size_t>(p.axis)] >= p.position ? 1.0 : -1.0);
   }
   std::string name() const override { return "rigid_points"; }
-  void add_forces(double) override { std::fill(a_.begin(), a_.end(), 0.0); }
+  void add_forces(const StepClock&) override { std::fill(a_.begin(), a_.end(), 0.0); }
   void add_gravity(const std::array<double, 3>& gravity, double& power) override {
     for (std::size_t k = 0; k < m_.size(); ++k)
       for (int i = 0; i < D; ++i) {
@@ -48,18 +48,20 @@ class RigidPoints : public Package<D> {
         power += m_[k] * gravity[static_cast<std::size_t>(i)] * v_[k * D + i];
       }
   }
-  void kick(double dt_mean) override {
+  void kick(const StepClock& clock) override {
     v_old_ = v_;
-    for (std::size_t k = 0; k < v_.size(); ++k) v_[k] += a_[k] * dt_mean;
+    for (std::size_t k = 0; k < v_.size(); ++k) v_[k] += a_[k] * clock.dt_mean();
   }
-  double drift(double dt) override {
+  double drift(const StepClock& clock) override {
+    // The step that ended at t_n (dt_minus) and the one being taken (dt).
+    const double dt_minus = clock.dt, dt = clock.dt_next;
     // The centred kinetic energy of the nodes (FemPackage::drift): (1/2) m (v_n^2 - a^2 dt-^2 / 4)
     // with v_n = v(n-1/2) + a dt- / 2.
     double kinetic = 0.0;
     for (std::size_t k = 0; k < m_.size(); ++k)
       for (int i = 0; i < D; ++i) {
-        const double a = a_[k * D + i], vn = v_old_[k * D + i] + 0.5 * a * dt_minus_;
-        kinetic += 0.5 * m_[k] * (vn * vn - 0.25 * a * a * dt_minus_ * dt_minus_);
+        const double a = a_[k * D + i], vn = v_old_[k * D + i] + 0.5 * a * dt_minus;
+        kinetic += 0.5 * m_[k] * (vn * vn - 0.25 * a * a * dt_minus * dt_minus);
       }
     for (std::size_t k = 0; k < x_.size(); ++k) x_[k] += v_[k] * dt;
     for (std::size_t k = 0; k < m_.size(); ++k)
@@ -71,10 +73,9 @@ class RigidPoints : public Package<D> {
           ++bounces_;
         }
       }
-    dt_minus_ = dt;
     return kinetic;
   }
-  void update_state(double, double) override {}
+  void update_state(const StepClock&, EnergyBalance&) override {}
   typename Package<D>::Vote vote() const override { return {std::numeric_limits<double>::infinity(), "none"}; }
   double kinetic_energy() const override {
     double e = 0.0;
@@ -95,7 +96,6 @@ class RigidPoints : public Package<D> {
     visit(visitor, "velocity", v_);
     visit(visitor, "velocity_old", v_old_);
     visit(visitor, "acceleration", a_);
-    visit(visitor, "dt_minus", dt_minus_);
     visit(visitor, "bounces", bounces_);
   }
 
@@ -107,7 +107,6 @@ class RigidPoints : public Package<D> {
   std::vector<sph::MirrorPlane> planes_;
   std::vector<double> side_;
   std::vector<double> x_, v_, v_old_, a_, m_;
-  double dt_minus_ = 0.0;
   std::int64_t bounces_ = 0;
 };
 

@@ -33,14 +33,14 @@ namespace camouflet {
 
 template <int D>
 void SphFemJoin<D>::keep_setup_interface() {
-  const FemElements<D>& el = *elements_;
+  const FemElements<D>& el = fem_->elements;
   setup_faces_ = faces_;
   setup_face_element_ = face_element_;
   setup_point_face_.resize(points_.size());
   for (std::size_t k = 0; k < points_.size(); ++k) setup_point_face_[k] = points_[k].face;
   std::int64_t node_count = 0;
   for (const std::int64_t n : el.connectivity) node_count = std::max(node_count, n + 1);
-  x_setup_.assign(x_, x_ + node_count * D);
+  x_setup_.assign(x(), x() + node_count * D);
   // The face neighbours (neighbour_) were found with the interface (find_interface_faces).
   joined_element_.assign(el.size(), 0);
   for (const Point& pt : points_) joined_element_[pt.element] = 1;
@@ -51,7 +51,7 @@ template <int D>
 void SphFemJoin<D>::follow_erosion() {
   if (points_.empty()) return;
   constexpr int faces_per_element = D == 2 ? 4 : 6;
-  const FemElements<D>& el = *elements_;
+  const FemElements<D>& el = fem_->elements;
   const std::vector<char>& eroded = el.eroded;
   // Open: eroded elements of the set-up interface (a face or a point), and eroded elements
   // across a face from an open one.
@@ -108,7 +108,7 @@ void SphFemJoin<D>::follow_erosion() {
     }
   }
   find_corner_faces(x_setup_.data());
-  update_face_geometry(x_);
+  update_face_geometry(x());
 }
 
 template void SphFemJoin<2>::keep_setup_interface();

@@ -7,8 +7,7 @@ SphFemCoupling<D>::SphFemCoupling(const Model& model, FemPackage<D>& fem, sph::S
     : fem_(fem), particles_(particles), eroded_seen_(fem.eroded_count) {
   if (!model.joins.empty()) {
     // The coupling points are mirrored in the particles' planes, in their order.
-    join_ = std::make_unique<SphFemJoin<D>>(model, fem.elements, fem.position.data(), fem.velocity.data(),
-                                            particles.system(), particles.system().mirror_planes());
+    join_ = std::make_unique<SphFemJoin<D>>(model, fem, particles.system(), particles.system().mirror_planes());
   }
   contact_ = SlidingContact<D>(model);
 }

@@ -32,7 +32,7 @@ Vec<D> SphFemJoin<D>::element_centre(std::size_t e, const double* x) const {
   constexpr int N = FemElements<D>::nodes;
   Vec<D> c{};
   for (int a = 0; a < N; ++a) {
-    const std::int64_t n = elements_->connectivity[e * N + static_cast<std::size_t>(a)];
+    const std::int64_t n = fem_->elements.connectivity[e * N + static_cast<std::size_t>(a)];
     for (int i = 0; i < D; ++i) c[i] += x[n * D + i] / N;
   }
   return c;
@@ -49,7 +49,7 @@ Vec<D> SphFemJoin<D>::interpolate(const double* field, const Point& point) const
   for (int a = 0; a < N; ++a) {
     double shape = 1.0;
     for (int i = 0; i < D; ++i) shape *= 0.5 * (1.0 + point.xi[static_cast<std::size_t>(i)] * corner[a][i]);
-    const std::int64_t n = elements_->connectivity[point.element * N + static_cast<std::size_t>(a)];
+    const std::int64_t n = fem_->elements.connectivity[point.element * N + static_cast<std::size_t>(a)];
     for (int i = 0; i < D; ++i) u[i] += shape * field[n * D + i];
   }
   return u;
@@ -63,14 +63,13 @@ Vec<D> SphFemJoin<D>::image(Vec<D> x, const Point& point) const {
 }
 
 template <int D>
-SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, const double* x,
-                          const double* v, sph::SphSystem<D>& particles, std::vector<sph::MirrorPlane> planes)
-    : elements_(&elements),
-      x_(x),
-      v_(v),
+SphFemJoin<D>::SphFemJoin(const Model& model, const FemPackage<D>& fem, sph::SphSystem<D>& particles,
+                          std::vector<sph::MirrorPlane> planes)
+    : fem_(&fem),
       planes_(std::move(planes)),
       options_(particles.options()),
       axisymmetric_(model.run.mode == GeometryMode::axisymmetric) {
+  const FemElements<D>& elements = fem.elements;
   if (model.joins.empty()) return;
   std::vector<char> joined(model.parts.size(), 0);
   for (const Join& join : model.joins)
@@ -167,7 +166,7 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
       if (k > 1) p.h0 = pa.reference_smoothing_length[static_cast<std::size_t>(i)];
       p.share = 1.0 / total;
       subs.push_back(p);
-      sub_where.push_back(image(interpolate(x_, p), p));
+      sub_where.push_back(image(interpolate(x(), p), p));
     }
   }
   // Keep the sub-points within reach of a particle.
@@ -177,8 +176,8 @@ SphFemJoin<D>::SphFemJoin(const Model& model, const FemElements<D>& elements, co
   // Interface faces: boundary faces of the joined elements with a particle just outside them.
   reach_ = reach;
   find_interface_faces(model, elements, particles, bins, reach);
-  update_face_geometry(x_);
-  find_corner_faces(x_);
+  update_face_geometry(x());
+  find_corner_faces(x());
   if (points_.empty() || faces_.empty()) {
     const Join& join = model.joins.front();
     throw InputError(join.where,
@@ -212,7 +211,7 @@ void SphFemJoin<D>::find_interface_faces(
       const auto q = join_faces::nodes<D>(elements, e, f);
       Vec<D> cf{};
       for (int a = 0; a < FN; ++a)
-        for (int i = 0; i < D; ++i) cf[i] += x_[q[static_cast<std::size_t>(a)] * D + i] / FN;
+        for (int i = 0; i < D; ++i) cf[i] += x()[q[static_cast<std::size_t>(a)] * D + i] / FN;
       const Vec<D> out = cf - ce;  // points out of the element through this face
       const double half = std::sqrt(dot(out, out));
       // A particle within one element half-size (or its own spacing) beyond the face, on its outer side.
@@ -240,7 +239,7 @@ void SphFemJoin<D>::find_interface_faces(
   }
   // Each coupling point sends its reactions to the interface face nearest to its element.
   for (Point& pt : points_) {
-    const Vec<D> ce = interpolate(x_, pt);
+    const Vec<D> ce = interpolate(x(), pt);
     double best = 1e300;
     for (std::size_t k = 0; k < centres.size(); ++k) {
       const Vec<D> d = centres[k] - ce;
@@ -281,7 +280,7 @@ void SphFemJoin<D>::compute_normalisation(const sph::SphSystem<D>& particles,
   const auto& kernel = particles.kernel();
   for (Point& pt : points_) {
     // An image has the neighbourhood of its element mirrored: the same n.
-    const Vec<D> xj = interpolate(x_, pt);
+    const Vec<D> xj = interpolate(x(), pt);
     double sum = 0.0;
     for (int a = -1; a <= 1; ++a)
       for (int b = -1; b <= 1; ++b)
@@ -305,7 +304,7 @@ void SphFemJoin<D>::compute_normalisation(const sph::SphSystem<D>& particles,
 template <int D>
 void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
   constexpr int N = FemElements<D>::nodes;
-  const FemElements<D>& el = *elements_;
+  const FemElements<D>& el = fem_->elements;
   for (std::size_t k = 0; k < points_.size(); ++k) {
     const Point& pt = points_[k];
     const std::size_t e = pt.element;
@@ -325,7 +324,7 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
       p.correction[j] = SymTensor::identity();
       continue;
     }
-    Vec<D> c = interpolate(x_, pt), vel = interpolate(v_, pt);
+    Vec<D> c = interpolate(x(), pt), vel = interpolate(v(), pt);
     // The stress the element's own nodal forces use: sigma - q I (fem_forces.cpp). Without q
     // the particles would see a different traction than the FEM transmits.
     SymTensor sigma = el.stress[e];
@@ -343,7 +342,7 @@ void SphFemJoin<D>::fill(sph::ParticleArrays<D>& p, std::size_t begin) const {
     if (axisymmetric_) {
       double r_centre = 0.0;
       for (int a = 0; a < N; ++a)
-        r_centre += x_[el.connectivity[e * N + static_cast<std::size_t>(a)] * D] / N;
+        r_centre += x()[el.connectivity[e * N + static_cast<std::size_t>(a)] * D] / N;
       mass *= std::abs(c[0]) / r_centre;
     }
     for (int m = 0; m < pt.image_count; ++m) {
@@ -393,11 +392,11 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
   const auto& kernel = particles.kernel();
   const std::size_t begin = particles.external_begin(), end = begin + points_.size();
   pairs_.clear();
-  if (!corner_faces_.empty()) update_face_geometry(x_);  // read only by split_reaction at corners
+  if (!corner_faces_.empty()) update_face_geometry(x());  // read only by split_reaction at corners
   // r-z: the ring radius of each point's element at the point (an image keeps its element's).
   if (axisymmetric_) {
     ring_.resize(points_.size());
-    for (std::size_t k = 0; k < points_.size(); ++k) ring_[k] = std::abs(interpolate(x_, points_[k])[0]);
+    for (std::size_t k = 0; k < points_.size(); ++k) ring_[k] = std::abs(interpolate(x(), points_[k])[0]);
   }
   for (std::size_t i = 0; i < p.real; ++i) {
     for (const std::uint32_t j : particles.neighbours().neighbours(i)) {
@@ -488,10 +487,11 @@ void SphFemJoin<D>::add_reactions(const sph::SphSystem<D>& particles, double* f)
 
 template <int D>
 Vec<D> SphFemJoin<D>::face_velocity(std::size_t face) const {
-  Vec<D> v{};
+  const double* velocity = v();
+  Vec<D> mean{};
   for (const std::int64_t n : faces_[face])
-    for (int d = 0; d < D; ++d) v[d] += v_[n * D + d] / face_nodes;
-  return v;
+    for (int d = 0; d < D; ++d) mean[d] += velocity[n * D + d] / face_nodes;
+  return mean;
 }
 
 template <int D>
@@ -520,8 +520,8 @@ double SphFemJoin<D>::settle(const sph::SphSystem<D>& particles, double dt,
     // the other half, so the viscosity converts kinetic into internal energy without loss.
     const double heat = 0.5 * dot(pair.viscous, dv) * dt;  // J, >= 0 for an approaching pair
     const std::size_t e = points_[pair.j - begin].element;
-    batches[static_cast<std::size_t>(elements_->material[e])].specific_energy[elements_->point[e]] +=
-        heat / elements_->mass[e];
+    batches[static_cast<std::size_t>(fem_->elements.material[e])].specific_energy[fem_->elements.point[e]] +=
+        heat / fem_->elements.mass[e];
   }
   return join_work + face_offset_work_;
 }

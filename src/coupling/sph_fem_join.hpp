@@ -46,7 +46,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "fem/fem_elements.hpp"
+#include "fem/fem_package.hpp"
 #include "model/model.hpp"
 #include "sph/sph_system.hpp"
 
@@ -58,10 +58,13 @@ class SphFemJoin {
   SphFemJoin() = default;
   // Coupling points for the elements of model.joins' FEM parts within reach
   // of the particles, with their images across `planes` (the particle mirror
-  // planes, axis included). x, v: the solver's node arrays (n*D), read at
-  // every refresh; they must outlive this object.
-  SphFemJoin(const Model& model, const FemElements<D>& elements, const double* x, const double* v,
-             sph::SphSystem<D>& particles, std::vector<sph::MirrorPlane> planes);
+  // planes, axis included). The FEM package's nodes are read through its view
+  // (FemPackage::nodes) at every use, its elements' state at every refresh; the package
+  // must outlive this object, in place. The coupling points are registered with the
+  // particle system, which has them written (fill) whenever it refreshes its ghosts: at its
+  // own sub-stages (kick, kinematics, neighbour search), which no driver stage can reach.
+  SphFemJoin(const Model& model, const FemPackage<D>& fem, sph::SphSystem<D>& particles,
+             std::vector<sph::MirrorPlane> planes);
 
   bool empty() const { return points_.empty(); }
   std::size_t point_count() const { return points_.size(); }
@@ -141,7 +144,7 @@ class SphFemJoin {
                             const std::unordered_map<std::int64_t, std::vector<std::uint32_t>>& bins,
                             double reach);
   Vec<D> element_centre(std::size_t e, const double* x) const;        // at node positions x (n*D)
-  Vec<D> element_centre(std::size_t e) const { return element_centre(e, x_); }
+  Vec<D> element_centre(std::size_t e) const { return element_centre(e, x()); }
   Vec<D> interpolate(const double* field, const Point& point) const;  // node field (n*D) at the point
   // join_erosion.cpp: the set-up interface and the face neighbours of the joined elements.
   void keep_setup_interface();
@@ -154,9 +157,9 @@ class SphFemJoin {
   double reach_ = 0.0;                         // m, as at set-up
   Vec<D> image(Vec<D> x, const Point& point) const;
 
-  const FemElements<D>* elements_ = nullptr;
-  const double* x_ = nullptr;
-  const double* v_ = nullptr;
+  const FemPackage<D>* fem_ = nullptr;
+  const double* x() const { return fem_->nodes().position.data(); }  // m, n*D, at this use
+  const double* v() const { return fem_->nodes().velocity.data(); }  // m/s, n*D, at this use
   std::vector<Point> points_;
   std::vector<sph::MirrorPlane> planes_;
   sph::SphOptions options_;

@@ -16,6 +16,7 @@
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
 #include "model/package.hpp"
+#include "model/point_view.hpp"
 #include "model/snapshot.hpp"
 
 namespace camouflet {
@@ -74,6 +75,8 @@ class FemPackage final : public Package<D> {
   void hold_still(const std::vector<char>& held_material) override;  // the nodes of those elements
   void come_to_rest() override;
 
+  // The nodes as the couplings read them (model/point_view.hpp).
+  PointView<D> nodes() const { return {position, velocity, node_mass}; }
   // The ring factors begin_step made (null outside r-z area-weighted momentum).
   const double* ring_factor() const { return ring_factor_; }
   // At set-up (the driver's constructor, initial velocities, the end of a relaxation): the

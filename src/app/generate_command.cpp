@@ -50,8 +50,8 @@ void add_generate_command(CLI::App& app, CommandResult& result) {
           target.string(), spec.three_d ? " (3-D half model)" : "", layout.block_count, layout.element_count,
           layout.charge_radius, layout.r_lines.size(),
           spec.three_d ? fmt::format(" x {}", layout.y_lines.size()) : std::string(), layout.z_lines.size(),
-          spec.transmitting ? "transmitting" : "FIXED", 1e3 * layout.reflection_time, 1e3 * spec.end_time,
-          !spec.transmitting && layout.reflection_time < spec.end_time ? "  WARNING: before the end time"
+          spec.transmitting ? "transmitting" : "FIXED", 1e3 * layout.reflection_time, 1e3 * spec.run.end_time,
+          !spec.transmitting && layout.reflection_time < spec.run.end_time ? "  WARNING: before the end time"
                                                                        : "");
       if (spec.sph_radius > 0.0) {
         std::cout << fmt::format(

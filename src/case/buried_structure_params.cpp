@@ -128,13 +128,13 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
     t->finish();
   }
   if (auto t = root.table("run")) {
-    read(*t, "end_time", s.end_time, s);
-    read(*t, "field_interval", s.field_interval, s);
-    read(*t, "gauge_interval", s.gauge_interval, s);
-    read(*t, "cfl", s.cfl, s);
+    read(*t, "end_time", s.run.end_time, s);
+    read(*t, "field_interval", s.run.field_interval, s);
+    read(*t, "gauge_interval", s.run.gauge_interval, s);
+    read(*t, "cfl", s.run.cfl, s);
     read(*t, "hourglass_coefficient", s.hourglass_coefficient, s);
-    read(*t, "gravity", s.gravity, s);
-    read(*t, "relaxation_period", s.relaxation_period, s);
+    read(*t, "gravity", s.run.gravity, s);
+    read(*t, "relaxation_period", s.run.relaxation_period, s);
     t->finish();
   }
   if (auto t = root.table("gauges")) {

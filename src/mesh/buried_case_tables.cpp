@@ -87,15 +87,15 @@ void write_soil_gauges(const BuriedStructureSpec& s, bool three_d, std::string& 
 void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry, std::string& b) {
   auto out = std::back_inserter(b);
   fmt::format_to(out, "title = \"{}\"\n\n[run]\ngeometry = \"{}\"\nend_time = {}  # s\ncfl = {}\n", s.title,
-                 geometry, s.end_time, s.cfl);
-  if (s.gravity > 0.0)
+                 geometry, s.run.end_time, s.run.cfl);
+  if (s.run.gravity > 0.0)
     fmt::format_to(
         out,
         "gravity = {}  # m/s^2\n\n[run.dynamic_relaxation]  # settles the box in the geostatic soil\n"
         "period = {}  # s\n",
-        std::string(geometry) == "3d" ? fmt::format("[0, 0, {}]", -s.gravity)
-                                      : fmt::format("[0, {}]", -s.gravity),
-        s.relaxation_period);
+        std::string(geometry) == "3d" ? fmt::format("[0, 0, {}]", -s.run.gravity)
+                                      : fmt::format("[0, {}]", -s.run.gravity),
+        s.run.relaxation_period);
   b += "\n";
   // Stiffness-form hourglass control: under the charge the soil flows plastically for tens of
   // milliseconds, and the viscous form (resisting hourglass velocities only) let the elements next
@@ -108,8 +108,8 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
                      ? "stiffness form: the soil under the charge flows for tens of ms"
                      : "the soil's (soil.hourglass)",
                  s.soil_hourglass, s.soil_hourglass_kappa());
-  fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.field_interval,
-                 s.gauge_interval);
+  fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.run.field_interval,
+                 s.run.gauge_interval);
   fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n", s.soil);
   if (s.soil_erosion_strain > 0.0)
     fmt::format_to(out, "erosion = {{ geometric_strain = {} }}  # soil.erosion: FEM soil elements only\n",
@@ -120,7 +120,7 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
 }
 
 std::string part_geostatic(const BuriedStructureSpec& s, const std::string& material) {
-  if (s.gravity == 0.0 || material != "soil") return "";
+  if (s.run.gravity == 0.0 || material != "soil") return "";
   return "geostatic = { surface = 0.0, k0 = \"jaky\" }\n";
 }
 

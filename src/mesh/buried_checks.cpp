@@ -34,20 +34,20 @@ void check_common(const BuriedStructureSpec& s, double a) {
   positive("mesh.structure", s.size_structure);
   positive("mesh.soil", s.size_soil);
   positive("mesh.far", s.size_far);
-  positive("run.end_time", s.end_time);
+  positive("run.end_time", s.run.end_time);
   if (!(s.top_depth >= 0.0))
     fail("structure.top_depth", fmt::format("must be >= 0 (m below the ground), got {}", s.top_depth));
-  if (!(s.field_interval >= 0.0)) fail("run.field_interval", "must be >= 0");
-  if (!(s.gauge_interval >= 0.0)) fail("run.gauge_interval", "must be >= 0");
-  if (!(s.cfl > 0.0 && s.cfl <= 1.0)) fail("run.cfl", fmt::format("must lie in (0, 1], got {}", s.cfl));
-  if (!(s.gravity >= 0.0))
-    fail("run.gravity", fmt::format("must be >= 0 (m/s^2, its magnitude), got {}", s.gravity));
-  if (s.gravity > 0.0 && !(s.relaxation_period > 0.0))
+  if (!(s.run.field_interval >= 0.0)) fail("run.field_interval", "must be >= 0");
+  if (!(s.run.gauge_interval >= 0.0)) fail("run.gauge_interval", "must be >= 0");
+  if (!(s.run.cfl > 0.0 && s.run.cfl <= 1.0)) fail("run.cfl", fmt::format("must lie in (0, 1], got {}", s.run.cfl));
+  if (!(s.run.gravity >= 0.0))
+    fail("run.gravity", fmt::format("must be >= 0 (m/s^2, its magnitude), got {}", s.run.gravity));
+  if (s.run.gravity > 0.0 && !(s.run.relaxation_period > 0.0))
     fail("run.relaxation_period",
          "needed with run.gravity: the model's fundamental period (s), about 4 domain.depth / c_s with c_s "
          "the "
          "soil's shear-wave speed, for the dynamic relaxation that settles the box before t = 0");
-  if (s.gravity == 0.0 && s.relaxation_period != 0.0)
+  if (s.run.gravity == 0.0 && s.run.relaxation_period != 0.0)
     fail("run.relaxation_period", "given without run.gravity: there is nothing to relax");
   if (!(s.hourglass_coefficient > 0.0 && s.hourglass_coefficient <= 0.5))
     fail("run.hourglass_coefficient",

@@ -229,7 +229,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
         "# No SPH zone (sph.radius = 0): the charge (JWL elements, programmed burn) and the near field are\n"
         "# Lagrangian FEM: crater ejecta are not followed, and the run stops if elements next to the charge\n"
         "# invert.\n";
-  else if (s.gravity == 0.0)
+  else if (s.run.gravity == 0.0)
     b +=
         "# Ejecta: no domain box is set, so particles thrown above the ground fly on (no gravity) and never\n"
         "# stop the run; none is removed.\n";
@@ -237,7 +237,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
     b +=
         "# Ejecta: no domain box is set; particles thrown above the ground fly under gravity and never stop\n"
         "# the run; none is removed.\n";
-  if (s.gravity > 0.0)
+  if (s.run.gravity > 0.0)
     b +=
         "# Gravity: the soil, FEM and SPH, starts in its geostatic state (Jaky's K0); the box settles in it\n"
         "# by a dynamic relaxation before t = 0, the charge held unlit (docs/theory/gravity.md).\n";

@@ -112,16 +112,19 @@ struct BuriedStructureSpec {
   double rebar_cover = 0.0;
   double rebar_ratio = 0.0;
   std::string steel = "steel_1006_wang2005";
-  // Run control.
-  double end_time = 0.07;         // s
-  double field_interval = 0.005;  // s
-  double gauge_interval = 2e-5;   // s
-  double cfl = 0.6;
-  // Gravity (m/s^2, 0: none): with it every FEM soil part starts in its geostatic state (Jaky's
-  // K0) and a dynamic relaxation of period `relaxation_period` (s) settles the box in it before
-  // t = 0 (docs/theory/gravity.md).
-  double gravity = 0.0;
-  double relaxation_period = 0.0;
+  // Run control: the [run] and [output] keys of the generated case.
+  struct Run {
+    double end_time = 0.07;         // s
+    double field_interval = 0.005;  // s
+    double gauge_interval = 2e-5;   // s
+    double cfl = 0.6;
+    // Gravity (m/s^2, 0: none): with it every FEM soil part starts in its geostatic state
+    // (Jaky's K0) and a dynamic relaxation of period `relaxation_period` (s) settles the box in
+    // it before t = 0 (docs/theory/gravity.md).
+    double gravity = 0.0;
+    double relaxation_period = 0.0;
+  };
+  Run run;
   int gauge_count = 10;  // gauges per soil group (A and B)
 
   // Where each key was read (for errors naming it); keys absent fall back to `source`.

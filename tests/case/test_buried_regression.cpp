@@ -43,9 +43,9 @@ BuriedStructureSpec reduced_case() {
   s.size_structure = 0.04;
   s.size_soil = 0.1;
   s.size_far = 0.3;
-  s.end_time = 0.7e-3;
-  s.field_interval = 0.0;
-  s.gauge_interval = 1e-5;
+  s.run.end_time = 0.7e-3;
+  s.run.field_interval = 0.0;
+  s.run.gauge_interval = 1e-5;
   s.gauge_count = 4;
   return s;
 }

@@ -146,8 +146,8 @@ TEST(BuriedStructure, BadInputNamesTheKey) {
 // geostatic state on every soil part, FEM and SPH (none on the box or the charge).
 TEST(BuriedStructure, GravityWritesGeostaticSoilAndRelaxation) {
   BuriedStructureSpec spec = test::with_sph_zone_and_rebar(paper_coarse(), 1.5, 0.025, 0.005);
-  spec.gravity = 9.81;
-  spec.relaxation_period = 0.21;
+  spec.run.gravity = 9.81;
+  spec.run.relaxation_period = 0.21;
   const Model model = read_case_text(buried_structure_case(spec, "test"), "gravity.toml");
   EXPECT_EQ(model.run.gravity[1], -9.81);
   ASSERT_TRUE(model.run.relaxation.has_value());
@@ -169,14 +169,14 @@ TEST(BuriedStructure, GravityWritesGeostaticSoilAndRelaxation) {
   EXPECT_GT(soil, 10u);
 
   BuriedStructureSpec bad = paper_coarse();
-  bad.gravity = 9.81;  // no period
+  bad.run.gravity = 9.81;  // no period
   expect_refused(bad, "run.relaxation_period");
   bad = paper_coarse();
-  bad.relaxation_period = 0.2;  // no gravity
+  bad.run.relaxation_period = 0.2;  // no gravity
   expect_refused(bad, "run.relaxation_period");
   bad = paper_coarse();
-  bad.gravity = -9.81;
-  bad.relaxation_period = 0.2;
+  bad.run.gravity = -9.81;
+  bad.run.relaxation_period = 0.2;
   expect_refused(bad, "run.gravity");
 }
 

@@ -282,9 +282,9 @@ BuriedStructureSpec tiny_3d() {
   s.has_rebar = true;
   s.rebar_cover = 0.015;
   s.rebar_ratio = 0.005;
-  s.end_time = 0.25e-3;
-  s.field_interval = 0.0;
-  s.gauge_interval = 2e-5;
+  s.run.end_time = 0.25e-3;
+  s.run.field_interval = 0.0;
+  s.run.gauge_interval = 2e-5;
   s.gauge_count = 3;
   return s;
 }
@@ -313,7 +313,7 @@ TEST(BuriedStructure3d, TinyFemChargeCaseRuns) {
   BuriedStructureSpec s = tiny_3d();
   s.sph_radius = 0.0;
   s.has_rebar = false;
-  s.end_time = 0.1e-3;
+  s.run.end_time = 0.1e-3;
   const RunSummary summary = run_tiny(s, "buried_3d_tiny_fem");
   ASSERT_FALSE(summary.failed) << summary.stop_reason;
   EXPECT_GT(summary.cycles, 10);

@@ -163,7 +163,15 @@ def main():
 
     spath = os.path.join(out, "structure.csv")
     if os.path.exists(spath):
-        blocks.append("<h2>Structure response</h2>")
+        if gen.get("structure_kind") == "free_field":
+            # structure.kind = "free_field": no box; the targets and members are the soil in its place.
+            blocks.append("<h2>Free field at the box's place</h2><p>This run has no box "
+                          "(<code>structure.kind = \"free_field\"</code>): the soil fills its place and "
+                          "interior, and the targets and members below, named after the box's parts, "
+                          "measure that soil: the free-field motion the box is weighed against "
+                          "(docs/buried-structure.md, \"The box against the free field\").</p>")
+        else:
+            blocks.append("<h2>Structure response</h2>")
         t, c = read_csv(spath)
         ms = t * 1e3
         has = lambda g: g + ".velocity_x" in c  # noqa: E731

@@ -110,6 +110,24 @@ TEST(BuriedFreeField, BoxPlaceAndInteriorAreSoil3d) {
   expect_free_field("geometry = \"3d\"\nside = 12.0\n", "width = 3.0\n");
 }
 
+// The case header's generator line (read by scripts/report.py) marks a free-field case, so that
+// the report names its "structure" section for the soil it measures; a box case carries no mark.
+TEST(BuriedFreeField, TheGeneratorLineMarksTheFreeField) {
+  for (const std::string domain : {"", "geometry = \"3d\"\nside = 12.0\n"}) {
+    const std::string structure = domain.empty() ? "" : "width = 3.0\n";
+    const auto generator_line = [&](const std::string& kind) {
+      const std::string text = buried_structure_case(
+          read_buried_structure_params_text(small_params(domain, structure + kind), "ff.params.toml"), "t");
+      const std::size_t at = text.find("# generator:");
+      return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+    };
+    const std::string free_field = generator_line("kind = \"free_field\"\n"), box = generator_line("");
+    EXPECT_NE(free_field.find(" structure_kind=free_field"), std::string::npos) << free_field;
+    EXPECT_FALSE(box.empty());
+    EXPECT_EQ(box.find("structure_kind"), std::string::npos) << box;
+  }
+}
+
 TEST(BuriedFreeField, AnUnknownKindIsRefusedNamingTheKey) {
   try {
     (void)read_buried_structure_params_text(small_params("", "kind = \"free\"\n"), "ff.params.toml");

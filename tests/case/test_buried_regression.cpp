@@ -150,6 +150,16 @@ TEST(BuriedRegression, ReducedCaseGaugePeaks) {
        {"fig08b_peak_stress.png", "fig09_histories.png", "fig11_interface_stress.png",
         "fig12_displacements.png", "fig15_front_wall.png", "fig16_floor.png", "energy_balance.png"})
     EXPECT_TRUE(fs::exists(out / "report" / f)) << f;
+
+  // The page as a reader sees it: Debian's headless Chromium (scripts/setup.sh installs it)
+  // loads it from a local server; every figure must load with a size, no request may fail and
+  // the console must stay free of errors. The screenshot stays beside the page
+  // (report_screenshot.png in the test's output folder, build/test-output/buried_regression/).
+  const std::string browser_check = std::string(CAMOUFLET_SOURCE_DIR) + "/scripts/report_in_browser.py";
+  const auto browser = test::run_camouflet_raw("/usr/bin/python3 '" + browser_check + "' '" + out.string() + "'");
+  std::cout << browser.output;
+  EXPECT_EQ(browser.status, 0) << browser.output;
+  EXPECT_TRUE(fs::exists(out / "report_screenshot.png"));
 }
 
 // The same reduced case with the paper's zoning (Fig. 6): the charge and the

@@ -21,14 +21,18 @@ void Solver<D>::add_package(std::unique_ptr<Package<D>> package) {
 }
 
 template <int D>
-void Solver<D>::register_package(std::unique_ptr<Package<D>> package) {
-  Package<D>* raw = package ? package.get() : &fem_;  // null: the FEM package, a member
+void Solver<D>::register_package(Package<D>& package) {
   for (const Package<D>* other : packages_)
-    if (other->name() == raw->name())
-      throw std::logic_error("add_package: a package named '" + raw->name() + "' is registered already");
-  split_.packages.push_back({raw->name()});
-  packages_.push_back(raw);
-  if (package) owned_packages_.push_back(std::move(package));
+    if (other->name() == package.name())
+      throw std::logic_error("add_package: a package named '" + package.name() + "' is registered already");
+  split_.packages.push_back({package.name()});
+  packages_.push_back(&package);
+}
+
+template <int D>
+void Solver<D>::register_package(std::unique_ptr<Package<D>> package) {
+  register_package(*package);
+  owned_packages_.push_back(std::move(package));
 }
 
 template <int D>
@@ -80,6 +84,13 @@ double Solver<D>::package_kinetic_energy() const {
 }
 
 template <int D>
+double Solver<D>::package_hourglass_energy() const {
+  double hourglass = 0.0;
+  for (const Package<D>* package : packages_) hourglass += package->hourglass_energy();
+  return hourglass;
+}
+
+template <int D>
 std::string Solver<D>::describe(EntityKind kind, std::int64_t id) const {
   for (const Package<D>* package : packages_) {
     std::string text = package->describe(kind, id);
@@ -95,6 +106,8 @@ void Solver<D>::visit_package_state(StateVisitor& visitor) {
 
 template void Solver<2>::add_package(std::unique_ptr<Package<2>>);
 template void Solver<3>::add_package(std::unique_ptr<Package<3>>);
+template void Solver<2>::register_package(Package<2>&);
+template void Solver<3>::register_package(Package<3>&);
 template void Solver<2>::register_package(std::unique_ptr<Package<2>>);
 template void Solver<3>::register_package(std::unique_ptr<Package<3>>);
 template void Solver<2>::begin_packages();
@@ -113,6 +126,8 @@ template void Solver<2>::gather_energies();
 template void Solver<3>::gather_energies();
 template double Solver<2>::package_kinetic_energy() const;
 template double Solver<3>::package_kinetic_energy() const;
+template double Solver<2>::package_hourglass_energy() const;
+template double Solver<3>::package_hourglass_energy() const;
 template std::string Solver<2>::describe(EntityKind, std::int64_t) const;
 template std::string Solver<3>::describe(EntityKind, std::int64_t) const;
 template void Solver<2>::visit_package_state(StateVisitor&);

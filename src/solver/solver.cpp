@@ -12,7 +12,7 @@ template <int D>
 Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode), fem_(model) {
   boundaries_ = Boundaries<D>(model, fem_);
   boundaries_.constrain(fem_.velocity, 0.0);
-  register_package(nullptr);  // FEM, first at every stage
+  register_package(fem_);  // FEM, a member, first at every stage
 
   // SPH particles: same materials, own batches (sph/sph_package.hpp), mirrored in the planes the
   // boundaries give them.
@@ -52,12 +52,11 @@ void Solver<D>::start_energy_and_step() {
     limit_.dt = dt_next_;
     limit_.reason = "initial_dt";
   }
-  double hourglass = 0.0;  // stored by a stiffness form: nought at t = 0 unless a relaxation stored some
-  for (const Package<D>* package : packages_) hourglass += package->hourglass_energy();
   const double kinetic = package_kinetic_energy();
   energy_.kinetic = kinetic;
   energy_.internal = internal_energy_;
-  energy_.initial_total = kinetic + internal_energy_ + hourglass;
+  // The hourglass energy a stiffness form stores: nought at t = 0 unless a relaxation stored some.
+  energy_.initial_total = kinetic + internal_energy_ + package_hourglass_energy();
 }
 
 template <int D>
@@ -126,12 +125,11 @@ template <int D>
 void Solver<D>::account_energy() {
   // The packages' centred kinetic energies at t_n (drift_packages), summed in their order.
   EnergyBalance& e = energy_;
-  double kinetic = 0.0, hourglass = 0.0;
+  double kinetic = 0.0;
   for (const auto& share : split_.packages) kinetic += share.kinetic;
-  for (const Package<D>* package : packages_) hourglass += package->hourglass_energy();
   e.kinetic = kinetic;
   e.internal = internal_energy_;
-  e.hourglass = hourglass;
+  e.hourglass = package_hourglass_energy();
   const double total = e.kinetic + e.internal + e.hourglass + e.eroded;
   const double scale = std::max(e.initial_total + std::abs(e.boundary_work), std::abs(total));
   e.relative_error = scale > 0.0 ? std::abs(total - e.initial_total - e.boundary_work) / scale : 0.0;

@@ -147,14 +147,16 @@ class Solver {
   double centred_step() const { return clock().dt_mean(); }
   void start_energy_and_step();  // the first step's vote and the initial energy (constructor, set_initial_velocity)
   // The packages' stages, each a loop over packages_ (package_stages.cpp).
-  void register_package(std::unique_ptr<Package<D>> package);
+  void register_package(Package<D>& package);                 // held elsewhere (FEM, a member)
+  void register_package(std::unique_ptr<Package<D>> package);  // owned here
   void begin_packages();
   void add_package_forces();
   void kick_packages();
   void drift_packages();   // reverse order; their centred kinetic energies into split_
   void check_packages() const;
   void update_packages();  // reverse order
-  double package_kinetic_energy() const;
+  double package_kinetic_energy() const;    // 1/2 m v^2 at t_n, summed in packages_' order
+  double package_hourglass_energy() const;  // J, summed in packages_' order
   std::string describe(EntityKind kind, std::int64_t id) const;  // the first package that knows the point
   void visit_package_state(StateVisitor& visitor);
 

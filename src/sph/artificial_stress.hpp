@@ -13,7 +13,9 @@
 //
 // Here `scale` stands for 1 / rho^2 (or w / eta^2 in the planar form used for
 // axisymmetry, sph/sph_system.hpp). In 2-D only the in-plane 2x2 block enters
-// the in-plane momentum equation; the out-of-plane / hoop component is left out.
+// the pair terms; in r-z the hoop component (a principal direction there) is
+// set by the force stage and enters the artificial stress's hoop term
+// (SphSystem::force_pass, docs/theory/sph.md).
 #include <cmath>
 #include <span>
 

@@ -75,8 +75,13 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
   const double mi = fi[P::m], eta_i = fi[P::eta], ci = fi[P::c];
   const double inv_eta_i = 1.0 / eta_i;
   const bool tensile_i = tensile && factors_.has_tensile[i];
+  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
+  const bool viscosity_hoop = axisymmetric && options_.viscosity_hoop;
+  const double inverse_ring_radius_i = inverse_ring_radius(fi[P::x]);
+  constexpr double inverse_two_pi = 0.5 / M_PI;
+  const double inverse_ring_weight_i = inverse_ring_radius_i * inverse_two_pi;
   const Lanes zero{};
-  Lanes acc[D] = {}, mu_max{}, count{};
+  Lanes acc[D] = {}, mu_max{}, count{}, hoop_weight{}, viscous_hoop{};
   for (std::size_t e0 = 0; e0 < list.size(); e0 += pair_lanes) {
     const PairGroup<D, 2> g(points, fi, list, e0, i);
     const Lanes inv_h = 1.0 / g.hij;
@@ -98,13 +103,31 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     const Lanes& mu = viscous.mu;
     mu_max = max_lanes(mu_max, -mu);
     Lanes* dissipation = viscous.dissipation;
+    Lanes hoop_weight_j{}, viscous_hoop_j{};
+    if (viscosity_hoop) {  // the viscosity's hoop shares (force_pass()), before the artificial stress joins d
+      const auto shares = viscous_hoop_shares(dissipation[0], g.fj[P::m], mi, eta_j, eta_i,
+                                              inverse_ring_radius(g.fj[P::x]) * inverse_two_pi, inverse_ring_weight_i);
+      viscous_hoop += shares.i;
+      viscous_hoop_j = shares.j;
+    }
     if (tensile) {
       LaneMask has;
       for (int l = 0; l < pair_lanes; ++l) has[l] = (tensile_i || factors_.has_tensile[g.j[l]]) ? -1 : 0;
       has &= g.inside;
       if (any_of(has)) {
-        const Lanes fn = tensile_weight(w.shape * tensile_shape_inverse_, options_.artificial_stress_power,
-                                        tensile_power_integer_);
+        Lanes fn = tensile_weight(w.shape * tensile_shape_inverse_, options_.artificial_stress_power,
+                                  tensile_power_integer_);
+        if (axisymmetric) {
+          // The artificial stress's hoop weight, then an image's ring sign on the pair's R term
+          // (force_pass(), "The hoop terms of the artificial viscosity and stress").
+          const Lanes term = has ? -(g.dx[0] * grad[0]) * fn : zero;
+          hoop_weight += term * g.fj[P::m] * inverse_ring_radius(g.fj[P::x]);
+          const Lanes reaction_weight = term * (mi * inverse_ring_radius_i);
+          for (int l = 0; l < pair_lanes; ++l) {
+            hoop_weight_j[l] = reaction_weight[l];
+            fn[l] *= ring_sign(g.j[l]);
+          }
+        }
         const auto ri = components(p_.tensile_term[i]);
         Lanes rij[6];
         for (int l = 0; l < pair_lanes; ++l) {
@@ -133,6 +156,8 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
         for (int a = 0; a < D; ++a) other.acceleration[a] -= reaction[a][l];
         other.compression_rate = std::max(other.compression_rate, -mu[l]);
         other.count += g.inside[l] ? 1 : 0;
+        other.tensile_hoop_weight += hoop_weight_j[l];
+        other.viscous_hoop += viscous_hoop_j[l];
       }
     }
   }
@@ -140,6 +165,8 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
   for (int a = 0; a < D; ++a) mine.acceleration[a] += sum_lanes(acc[a]);
   mine.compression_rate = std::max(mine.compression_rate, max_of_lanes(mu_max));
   mine.count += static_cast<int>(sum_lanes(count));
+  mine.tensile_hoop_weight += sum_lanes(hoop_weight);
+  mine.viscous_hoop += sum_lanes(viscous_hoop);
 }
 
 template <int D>

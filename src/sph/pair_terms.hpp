@@ -10,6 +10,7 @@
 // order in which a row adds its terms up differs. The equations are those of
 // sph_system.hpp; `inside` marks the pairs within the kernel's support.
 #include <array>
+#include <cmath>
 
 #include "core/sym_tensor.hpp"
 #include "sph/pair_lanes.hpp"
@@ -55,6 +56,36 @@ inline ViscousPair<D, T, M> viscous_pair(M inside, const T dx[D], const T dv[D],
   const T c_mean = 0.5 * (c_i + c_j);
   const T pi_ij = (-alpha * c_mean * out.mu + beta * out.mu * out.mu) / (0.5 * (eta_i + eta_j));
   for (int a = 0; a < D; ++a) out.dissipation[a] = out.approaching ? grad[a] * pi_ij : zero;
+  return out;
+}
+
+// 1 / |r| of a point at radius r (r-z; an image across the axis stands at r < 0), 0 on the axis.
+inline double inverse_ring_radius(double r) { return r != 0.0 ? 1.0 / std::abs(r) : 0.0; }
+inline Lanes inverse_ring_radius(Lanes r) {
+  const Lanes a = abs_of(r);
+  const Lanes one = Lanes{} + 1.0;
+  return a != 0.0 ? one / (a != 0.0 ? a : one) : Lanes{};
+}
+
+// r-z: the artificial viscosity's hoop shares of a pair (SphSystem::force_pass(), "The hoop terms
+// of the artificial viscosity and stress"). The pair's viscous term m_j Pi_ij grad W, Pi_ij = K_ij /
+// eta_mean, weighs its neighbours by ring mass; its planar (Cartesian) form (m_j / w_j) K_ij /
+// rho_mean grad W, w = 2 pi |r|, rho = eta / w, gives no force in a uniform compression. The
+// shares are the planar form's radial term minus the ring form's: i gets
+// -d_r m_j (eta_mean / (w_j rho_mean) - 1), j gets +d_r m_i (eta_mean / (w_i rho_mean) - 1), with
+// d_r = Pi_ij dW/dr_i the pair's viscous term (radial). inv_w = 1 / w, 0 for a point on the
+// axis (no share).
+template <class T, class Ti>
+struct ViscousHoop {
+  T i, j;
+};
+template <class T, class Ti>
+inline ViscousHoop<T, Ti> viscous_hoop_shares(T d_r, T m_j, Ti m_i, T eta_j, Ti eta_i, T inv_w_j, Ti inv_w_i) {
+  const T ratio = (eta_i + eta_j) / (eta_i * inv_w_i + eta_j * inv_w_j);  // eta_mean / rho_mean
+  const T zero{};
+  ViscousHoop<T, Ti> out;
+  out.i = inv_w_j != 0.0 ? -d_r * m_j * (ratio * inv_w_j - 1.0) : zero;
+  out.j = inv_w_j != 0.0 ? d_r * m_i * (ratio * inv_w_i - 1.0) : zero;
   return out;
 }
 

@@ -35,11 +35,15 @@ void SphSystem<D>::compute_accelerations() {
                            {p_.tensile_term.data() + b, count});
     }
   } else if (options_.artificial_stress) {
+    const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
+    const double epsilon = options_.artificial_stress_epsilon;
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const double eta = p_.planar_density[i];
-      p_.tensile_term[i] = artificial_stress<D>(p_.stress[i], options_.artificial_stress_epsilon,
-                                                geometric_weight(p_.position[i]) / (eta * eta));
+      const double scale = geometric_weight(p_.position[i]) / (eta * eta);
+      p_.tensile_term[i] = artificial_stress<D>(p_.stress[i], epsilon, scale);
+      // r-z: the hoop direction is principal; its R enters the hoop term of force_pass().
+      if (axisymmetric && p_.stress[i].zz > 0.0) p_.tensile_term[i].zz = -epsilon * p_.stress[i].zz * scale;
     }
   }
   prepare_neighbours();
@@ -135,6 +139,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   refresh_active_pairs();
   size_point_factors();
+  if (axisymmetric && pair_hoop_.size() != n) pair_hoop_.assign(n, 0.0);
   pair_dissipation_.resize(active_.upper_index()[n]);
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
@@ -162,7 +167,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
         return;
       }
       Vec<D> acc{};
-      double mu_max = 0.0;
+      double mu_max = 0.0, hoop_weight = 0.0, viscous_hoop = 0.0;
       int count = 0;
       const std::size_t base = active_.upper_index()[i];
       const auto list = active_upper_neighbours(i);
@@ -188,8 +193,22 @@ void SphSystem<D>::force_pass(bool write_rates) {
                                                                p_.wave_speed[j], eta[i], eta[j], q.alpha, q.beta);
         const double mu = viscous.mu;
         if (viscous.approaching) mu_max = std::max(mu_max, -mu);
+        if (axisymmetric && options_.viscosity_hoop) {  // as force_row_lanes: the viscosity's hoop shares
+          constexpr double inverse_two_pi = 0.5 / M_PI;
+          const auto shares = viscous_hoop_shares(viscous.dissipation[0], m[j], m[i], eta[j], eta[i],
+                                                  inverse_ring_radius(x[j][0]) * inverse_two_pi,
+                                                  inverse_ring_radius(x[i][0]) * inverse_two_pi);
+          viscous_hoop += shares.i;
+          if (j < n) own[j].viscous_hoop += shares.j;
+        }
         if (tensile && (factors_.has_tensile[i] | factors_.has_tensile[j])) {
-          const double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
+          double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
+          if (axisymmetric) {  // as force_row_lanes: the hoop weight, then the ring sign of an image
+            const double term = -(dx[0] * grad_a[0]) * fn;
+            hoop_weight += term * m[j] * inverse_ring_radius(x[j][0]);
+            if (j < n) own[j].tensile_hoop_weight += term * m[i] * inverse_ring_radius(x[i][0]);
+            fn *= ring_sign(j);
+          }
           const auto r_sum = components(p_.tensile_term[i] + p_.tensile_term[j]);
           subtract_tensile_pair<D>(true, r_sum.data(), grad_a, fn, viscous.dissipation);
         }
@@ -214,21 +233,43 @@ void SphSystem<D>::force_pass(bool write_rates) {
       mine.acceleration += acc;
       mine.compression_rate = std::max(mine.compression_rate, mu_max);
       mine.count += count;
+      mine.tensile_hoop_weight += hoop_weight;
+      mine.viscous_hoop += viscous_hoop;
     });
-    if (write_rates) {
-      auto add = [](ForceSum& total, const ForceSum& part) {
-        total.acceleration += part.acceleration;
-        total.compression_rate = std::max(total.compression_rate, part.compression_rate);
-        total.count += part.count;
-      };
+    auto add = [](ForceSum& total, const ForceSum& part) {
+      total.acceleration += part.acceleration;
+      total.compression_rate = std::max(total.compression_rate, part.compression_rate);
+      total.count += part.count;
+      total.tensile_hoop_weight += part.tensile_hoop_weight;
+      total.viscous_hoop += part.viscous_hoop;
+    };
+    // The totals: the accelerations (write_rates), and in r-z the hoop terms of the artificial
+    // viscosity and stress, which the kick books also after a restart (force_pass(false)).
+    if (write_rates || axisymmetric)
       for_each_row_total(blocks, force_sums_, add, [&](std::size_t i, ForceSum total) {
+        if (axisymmetric) {
+          // The hoop terms of the artificial viscosity and stress. Their pair sums carry the ring
+          // mass m_j ~ r_j, so that a uniform viscous pressure or artificial stress gives a
+          // radial force of order q / r that no hoop term balanced, as -sigma_tt / (rho r)
+          // balances the stress's (docs/theory/sph.md, "The hoop terms ...").
+          // Artificial stress m_j f^n (R_i + R_j): the ring weight sits on R_i's half (R_j ~
+          // 1 / (r_j rho_j^2) cancels m_j's r_j), signed for an image. With
+          // m_j = (m_j / |r_j|) (r_i + (r_j - r_i)) that half holds the 1/r term
+          // R_i sum_j (m_j / |r_j|) (r_j - r_i) f^n grad W; the hoop term is -R_tt,i times its
+          // radial weight sum, so that an R even in r and theta gives no radial force.
+          // Viscosity ([sph] viscosity_hoop): the planar form's radial term minus the ring form's
+          // (pair_terms.hpp, viscous_hoop_shares).
+          pair_hoop_[i] = total.viscous_hoop;
+          if (tensile) pair_hoop_[i] -= p_.tensile_term[i].zz * total.tensile_hoop_weight;
+          total.acceleration[0] += pair_hoop_[i];
+        }
+        if (!write_rates) return;
         if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
           total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
         p_.acceleration[i] = total.acceleration;
         p_.compression_rate[i] = total.compression_rate;
         p_.neighbour_count[i] = total.count;
       });
-    }
   }
   pair_dissipation_current_ = true;
   pair_dissipation_extraction_ = active_.extractions();

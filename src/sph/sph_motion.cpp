@@ -101,10 +101,12 @@ void SphSystem<D>::kick(double dt) {
 // them |r|: with it the term of pair (i, image of j) and the one of pair (j, image of i) balance
 // each other's work exactly; with the signed weight they do not, and the energy balance of a
 // blast centred on the axis lost ~5 % (long_sedov.cpp). The difference of the two forces on i,
-// dF_i = 2 m_i m_g (S_g / eta_i + f^n R_g) . grad W (S_g, R_g as stored, signed), is the only
-// part of the sums that no internal energy balances: its work dF_i . vbar_i dt is taken from
-// the particle's internal energy, the same centring as the viscous heating above. It vanishes
-// with the spacing (particles within 2 h of the axis, ring masses ~ r).
+// dF_i = 2 m_g (S_g / eta_i - f^n R_i) . grad W per unit mass (S_g as stored, signed; the
+// artificial stress's ring weight sits on R_i's half of its pair), is part of the sums that no
+// internal energy balances: its work dF_i . vbar_i dt is taken from the particle's internal
+// energy, the same centring as the viscous heating above. It vanishes with the spacing
+// (particles within 2 h of the axis, ring masses ~ r). So is the work of the hoop terms of the
+// artificial viscosity and stress (force_pass()), which have no pair partner.
 template <int D>
 void SphSystem<D>::book_axis_image_work(double dt) {
   if (mode_ != GeometryMode::axisymmetric || !options_.volume_form) return;
@@ -115,13 +117,17 @@ void SphSystem<D>::book_axis_image_work(double dt) {
   const auto& eta = factors_.sum_density;
   const bool tensile = options_.artificial_stress;
   const double power = options_.artificial_stress_power;
+  const bool hoop = pair_hoop_.size() == n;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const auto list = active_upper_neighbours(i);  // every image j >= n > i is in the upper part
-    if (list.empty() || list.back() < n) continue;
+    const bool images = !list.empty() && list.back() >= n;
+    if (!images && !(hoop && pair_hoop_[i] != 0.0)) continue;
     const Vec<D> v_mean = (velocity_old_[i] + p_.velocity[i]) * 0.5;
-    double work = 0.0;  // J/kg per s
+    // The hoop terms of the artificial viscosity and stress have no pair partner: their work too.
+    double work = hoop ? pair_hoop_[i] * v_mean[0] : 0.0;  // J/kg per s
     for (const std::uint32_t j : list) {
+      if (!images) break;
       if (j < n || j >= images_end || image_sign_[j - n] > 0) continue;
       const Vec<D> dx = x[i] - x[j];
       const double r2 = dot(dx, dx);
@@ -130,8 +136,11 @@ void SphSystem<D>::book_axis_image_work(double dt) {
       const auto w = kernel_.pair_terms(std::sqrt(r2), 1.0 / hij);
       const Vec<D> grad = pair_gradient(i, j, dx * w.gradient_factor);
       SymTensor term = p_.stress_term[j] * (1.0 / eta[i]);
+      // The artificial stress's pair term is m_j f^n (R_i + R_j): its ring weight is on R_i's
+      // half (R_j ~ sigma_j / (w_j rho_j^2) cancels m_j's w_j), so an image's sign falls on R_i,
+      // and the difference from the conservative |r| term is -2 m_g f^n R_i.
       if (tensile && (factors_.has_tensile[i] | factors_.has_tensile[j]))
-        term += p_.tensile_term[j] *
+        term -= p_.tensile_term[i] *
                 tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
       work += 2.0 * m[j] * dot(apply<D>(term, grad), v_mean);
     }

@@ -30,6 +30,7 @@ SphOptions read_sph_options(Parameters& block) {
     block.fail("viscosity_alpha_min",
                "viscosity_alpha_min is larger than viscosity_alpha (the switch's maximum)");
   o.viscosity_switch_decay = block.positive("viscosity_switch_decay", o.viscosity_switch_decay);
+  o.viscosity_hoop = block.flag("viscosity_hoop", o.viscosity_hoop);
   o.artificial_stress = block.flag("artificial_stress", o.artificial_stress);
   o.artificial_stress_epsilon =
       block.in_range("artificial_stress_epsilon", 0.0, 1.0, o.artificial_stress_epsilon);

@@ -30,7 +30,9 @@
 // and Garcia-Senz, Relano, Cabezon & Bravo (2009, MNRAS 392, 346; "AxisSPH",
 // Relano 2012): the 2-D kernel sums act on eta = 2 pi r rho, and the hoop
 // terms come from writing the r-z divergence of the stress as
-// div(r sigma) - sigma_tt e_r. The axis is a mirror plane (boundary/mirror_planes.hpp).
+// div(r sigma) - sigma_tt e_r. The artificial stress has the hoop term of its own ring sum
+// (and [sph] viscosity_hoop one for the viscosity), sph_forces.cpp. The axis is a mirror plane
+// (boundary/mirror_planes.hpp).
 //
 // Stages of one cycle (the solver, or step() for pure-SPH runs, calls them in order):
 //   compute_accelerations()  forces at x(n) with sigma(n)       -> a(n)
@@ -240,6 +242,14 @@ class SphSystem {
   std::vector<MirrorPlane> planes_;
   std::vector<Ghost> ghosts_;
   std::vector<signed char> image_sign_;  // per ghost: -1 across the axis (an odd number of times), else +1
+  // -1 for point j an image across the axis with a signed ring weight (refresh_ghosts), else +1.
+  double ring_sign(std::size_t j) const {
+    const std::size_t n = p_.real;
+    return j >= n && j - n < image_sign_.size() && image_sign_[j - n] < 0 ? -1.0 : 1.0;
+  }
+  // r-z: the hoop terms of the artificial viscosity and stress of each particle (radial
+  // acceleration, m/s^2), kept for the booking of their work (book_axis_image_work).
+  std::vector<double> pair_hoop_;
   NeighbourSearch<D> search_;
   bool correction_current_ = false;
   double skin_ = 0.0;
@@ -280,6 +290,11 @@ class SphSystem {
     Vec<D> acceleration{};
     double compression_rate = 0.0;
     int count = 0;
+    // r-z: sum_j (m_j / |r_j|) (r_j - r_i) f^n dW/dr_i, the artificial stress's hoop weight, and
+    // sum_j (m_j / |r_j|) (|r_j| - r_i) Pi_ij dW/dr_i, the artificial viscosity's hoop term
+    // (force_pass(), "The hoop terms of the artificial viscosity and stress").
+    double tensile_hoop_weight = 0.0;
+    double viscous_hoop = 0.0;
   };
   struct KinematicSum {
     double rate = 0.0;    // sum_j weight_j v_ij . grad W

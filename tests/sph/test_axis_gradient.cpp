@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <array>
 #include <map>
 
 #include "common/verification.hpp"
@@ -22,25 +24,30 @@ struct ColumnAcceleration {
 
 // The mean rho a per particle column (interior rows only) for a stress field sigma(r, z) set on
 // a square lattice of 0.3 m x 1 m in r-z.
+// The velocity of each particle from `velocity(r, z)` when given (the viscous force's tests).
+using VelocityField = std::function<Vec<2>(double, double)>;
 template <class StressField>
-std::map<int, ColumnAcceleration> column_accelerations(const StressField& sigma, double spacing) {
+std::map<int, ColumnAcceleration> column_accelerations(const StressField& sigma, double spacing,
+                                                      double z_low = 0.3, double z_high = 0.7,
+                                                      SphOptions options = {}, VelocityField velocity = {}) {
   Model model;
   model.run.mode = GeometryMode::axisymmetric;
   const double rho = 1000.0;
   test::add_sph_part(model, "gas", test::ideal_gas("gas", rho, 1.4, 1e5),
                      test::box_fill({0, 0, 0}, {0.3, 1, 0}, spacing));
-  SphSystem<2> sph(model, SphOptions{});
+  SphSystem<2> sph(model, options);
   sph.update_state(1e-12, 1e-12);
   auto& p = sph.particles();
   for (std::size_t i = 0; i < sph.size(); ++i) {
     p.stress[i] = sigma(p.position[i][0], p.position[i][1]);
     p.stress_term[i] = p.stress[i] * (1.0 / p.density[i]);
+    if (velocity) p.velocity[i] = velocity(p.position[i][0], p.position[i][1]);
   }
   sph.compute_accelerations();
   std::map<int, ColumnAcceleration> columns;
   for (std::size_t i = 0; i < sph.size(); ++i) {
     const double z = p.position[i][1];
-    if (z < 0.3 || z > 0.7) continue;
+    if (z < z_low || z > z_high) continue;
     ColumnAcceleration& c = columns[static_cast<int>(p.position[i][0] / spacing)];
     c.radial += p.acceleration[i][0] * p.density[i];
     c.axial += p.acceleration[i][1] * p.density[i];
@@ -166,4 +173,108 @@ TEST(SphAxis, ShearGradientIsTheSameInEveryColumn) {
       {"r-z SPH, sigma_rz = k r on a uniform pressure: radial force imbalance rho a_r r / p0, "
        "largest over the columns up to 12 spacings from the axis",
        "0", 0.0, worst_radial, 0.02, false, "-"});
+}
+
+TEST(SphAxis, SphericalEquilibriumFieldGivesNoForceNextToTheAxis) {
+  // The elastic field around a pressurised spherical cavity (Lame): sigma_RR = -p (a/R)^3,
+  // sigma_tt = +p/2 (a/R)^3 (hoop tension), centred on the axis. It is in equilibrium: no force
+  // anywhere. Its hoop tension switches the artificial stress on; before the artificial stress
+  // had a hoop term of its own (and its images' sign on the right half of the pair), the first
+  // column felt an inward rho a_r of 0.81 |d sigma / dR|, the second 0.26, the third 0.15: the
+  // (1/r) d(r R_rr)/dr of its ring sum with no -R_tt / r to balance it.
+  const double p = 1e6, a = 0.1, zc = 0.5, spacing = 0.02;
+  auto lame = [&](double r, double z) {
+    const double dz = z - zc, R = std::hypot(r, dz), s = std::pow(a / R, 3);
+    const double A = 0.5 * p * s, B = -1.5 * p * s, nr = r / R, nz = dz / R;
+    return SymTensor{A + B * nr * nr, A + B * nz * nz, A, B * nr * nz, 0, 0};
+  };
+  // Rows 0.25-0.35 m below the centre; the scale is |d sigma_RR / dR| at R = 0.3 m.
+  const double scale = 3.0 * p * std::pow(a / 0.3, 3) / 0.3;
+  SphOptions no_artificial_stress;
+  no_artificial_stress.artificial_stress = false;
+  double worst = 0.0, worst_without = 0.0;
+  const auto columns = column_accelerations(lame, spacing, 0.15, 0.25);
+  const auto without = column_accelerations(lame, spacing, 0.15, 0.25, no_artificial_stress);
+  for (int col = 0; col < 3; ++col) {
+    std::printf("column %d: rho a_r / scale %+.4f (artificial stress off: %+.4f), rho a_z / scale %+.4f\n", col,
+                columns.at(col).radial / scale, without.at(col).radial / scale, columns.at(col).axial / scale);
+    worst = std::max(worst, std::abs(columns.at(col).radial) / scale);
+    worst_without = std::max(worst_without, std::abs(without.at(col).radial) / scale);
+  }
+  test::verify({"r-z SPH, Lame field of a pressurised sphere centred on the axis (hoop tension, artificial "
+                "stress on): radial force of the first three columns / |d sigma / dR|",
+                "0 (equilibrium); was 0.81 before the artificial stress's hoop term", 0.0, worst, 0.02, false,
+                "-"});
+  test::verify({"r-z SPH, the same Lame field with the artificial stress off: radial force of the first three "
+                "columns / |d sigma / dR|",
+                "0 (equilibrium)", 0.0, worst_without, 0.01, false, "-"});
+}
+
+TEST(SphAxis, UniformCompressionGivesNoViscousForceNextToTheAxis) {
+  // A uniform compression towards a point on the axis, v = -k (x - c), with no stress: the
+  // artificial viscosity acts as a uniform viscous pressure, whose divergence is zero. Its pair
+  // sum weighs the neighbours by ring mass and gave a force towards the axis of order q / r in
+  // every column without the viscosity's hoop term (rho a_r = -6.0e6 Pa/m in the third column,
+  // -2.6e6 in the sixth, as 1/r; the first column less, its images carrying |r|). The term is an
+  // option ([sph] viscosity_hoop), off by default (sph_options.hpp says why).
+  const double k = 100.0, zc = 0.5, spacing = 0.02;
+  SphOptions options;
+  options.artificial_stress = false;
+  options.viscosity_hoop = true;
+  auto zero = [](double, double) { return SymTensor{}; };
+  const auto columns = column_accelerations(zero, spacing, 0.4, 0.6, options,
+                                            [&](double r, double z) { return Vec<2>{-k * r, -k * (z - zc)}; });
+  // The scale: one column's viscous pair sum alone, rho (alpha c h k + beta h^2 k^2) / h, with
+  // c = 11.8 m/s (the gas at rest), h = 1.2 spacings, alpha = 1, beta = 2.
+  const double c = std::sqrt(1.4e5 / 1000.0), h = 1.2 * spacing;
+  const double scale = 1000.0 * (c * h * k + 2.0 * h * h * k * k) / h;
+  double worst = 0.0;
+  for (const auto& [col, a] : columns) {
+    if (col > 12) continue;  // the free outer surface (r = 0.3 m) and its neighbour
+    std::printf("column %2d: rho a_r %+.4e  rho a_z %+.4e Pa/m\n", col, a.radial, a.axial);
+    worst = std::max({worst, std::abs(a.radial) / scale, std::abs(a.axial) / scale});
+  }
+  test::verify({"r-z SPH, uniform compression towards a point on the axis, no stress: viscous force of the "
+                "columns up to 12 spacings from the axis / (rho q / h)",
+                "0 (a uniform viscous pressure); 6.0e6 Pa/m = 3.6 in the third column without the viscosity's "
+                "hoop term ([sph] viscosity_hoop = true)",
+                0.0, worst, 1e-6, false, "-"});
+}
+TEST(SphAxis, UniformExpansionHasTheSameStrainRateInEveryColumn) {
+  // v = k (x - c), a uniform expansion from a point on the axis: D = k I in every column, the hoop
+  // rate v_r / r exactly, the in-plane rates with the lattice's kernel-gradient normalisation
+  // (0.9 %, the same in every column, as in the momentum sums above).
+  const double k = 100.0, zc = 0.5, spacing = 0.02;
+  Model model;
+  model.run.mode = GeometryMode::axisymmetric;
+  test::add_sph_part(model, "gas", test::ideal_gas("gas", 1000.0, 1.4, 1e5),
+                     test::box_fill({0, 0, 0}, {0.3, 1, 0}, spacing));
+  SphSystem<2> sph(model, SphOptions{});
+  auto& p = sph.particles();
+  for (std::size_t i = 0; i < sph.size(); ++i)
+    p.velocity[i] = Vec<2>{k * p.position[i][0], k * (p.position[i][1] - zc)};
+  sph.update_state(1e-9, 1e-9);
+  std::map<int, std::array<double, 5>> columns;  // D_rr, D_zz, D_tt, D_rz (/ k) and the count
+  for (std::size_t i = 0; i < sph.size(); ++i) {
+    if (p.position[i][1] < 0.4 || p.position[i][1] > 0.6) continue;
+    auto& c = columns[static_cast<int>(p.position[i][0] / spacing)];
+    const SymTensor& d = p.strain_rate[i];
+    c[0] += d.xx / k, c[1] += d.yy / k, c[2] += d.zz / k, c[3] += d.xy / k, c[4] += 1;
+  }
+  const auto& interior = columns.at(6);
+  double worst_in_plane = 0.0, worst_hoop = 0.0;
+  for (const auto& [col, c] : columns) {
+    if (col > 12) continue;  // the free outer surface (r = 0.3 m) and its neighbour
+    std::printf("column %2d: D_rr %.5f D_zz %.5f D_tt %.5f D_rz %+.1e (/ k)\n", col, c[0] / c[4], c[1] / c[4],
+                c[2] / c[4], c[3] / c[4]);
+    worst_in_plane = std::max({worst_in_plane, std::abs(c[0] / c[4] - interior[0] / interior[4]),
+                               std::abs(c[1] / c[4] - interior[1] / interior[4]), std::abs(c[3] / c[4])});
+    worst_hoop = std::max(worst_hoop, std::abs(c[2] / c[4] - 1.0));
+  }
+  test::verify({"r-z SPH, uniform expansion from a point on the axis: in-plane strain rates of the columns up to "
+                "12 spacings from the axis, largest difference from the seventh column's / k",
+                "0 (the same rate in every column)", 0.0, worst_in_plane, 1e-3, false, "-"});
+  test::verify({"r-z SPH, uniform expansion from a point on the axis: hoop strain rate v_r / r of the same "
+                "columns / k",
+                "exact (to k dt / 2 = 5e-8: v(n+1/2) over the mid-step radius)", 0.0, worst_hoop, 1e-6, false, "-"});
 }

@@ -36,7 +36,7 @@ struct SphOptions {
   // viscosity and stress"): the radial viscous force in the planar (Cartesian) weights, so that a
   // uniform compression gives no force next to the axis (without it: ~q/r towards the axis).
   // Off by default: on, the r-z Sedov blast's shock runs 11 % further along the equator than
-  // along the axis (0.505 against 0.455 m; 0.475 in both without), docs/theory/sph.md.
+  // along the axis (0.505 against 0.455 m; 0.485 m in both without), docs/theory/sph.md.
   bool viscosity_hoop = false;
   double viscosity_alpha_min = 0.1;
   double viscosity_switch_decay = 0.2;

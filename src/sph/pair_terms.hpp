@@ -75,15 +75,15 @@ inline Lanes inverse_ring_radius(Lanes r) {
 // -d_r m_j (eta_mean / (w_j rho_mean) - 1), j gets +d_r m_i (eta_mean / (w_i rho_mean) - 1), with
 // d_r = Pi_ij dW/dr_i the pair's viscous term (radial). inv_w = 1 / w, 0 for a point on the
 // axis (no share).
-template <class T, class Ti>
+template <class T>
 struct ViscousHoop {
   T i, j;
 };
 template <class T, class Ti>
-inline ViscousHoop<T, Ti> viscous_hoop_shares(T d_r, T m_j, Ti m_i, T eta_j, Ti eta_i, T inv_w_j, Ti inv_w_i) {
+inline ViscousHoop<T> viscous_hoop_shares(T d_r, T m_j, Ti m_i, T eta_j, Ti eta_i, T inv_w_j, Ti inv_w_i) {
   const T ratio = (eta_i + eta_j) / (eta_i * inv_w_i + eta_j * inv_w_j);  // eta_mean / rho_mean
   const T zero{};
-  ViscousHoop<T, Ti> out;
+  ViscousHoop<T> out;
   out.i = inv_w_j != 0.0 ? -d_r * m_j * (ratio * inv_w_j - 1.0) : zero;
   out.j = inv_w_j != 0.0 ? d_r * m_i * (ratio * inv_w_i - 1.0) : zero;
   return out;

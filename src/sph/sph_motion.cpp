@@ -109,7 +109,8 @@ void SphSystem<D>::kick(double dt) {
 // artificial viscosity and stress (force_pass()), which have no pair partner.
 template <int D>
 void SphSystem<D>::book_axis_image_work(double dt) {
-  if (mode_ != GeometryMode::axisymmetric || !options_.volume_form) return;
+  // (The density form keeps |r| on its images, image_sign_ > 0: only the hoop terms' work.)
+  if (mode_ != GeometryMode::axisymmetric) return;
   const std::size_t n = p_.real, images_end = n + ghosts_.size();
   const auto& x = p_.position;
   const auto& h = p_.smoothing_length;

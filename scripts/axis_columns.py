@@ -23,19 +23,16 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_metrics import read_vtu  # noqa: E402
+
 
 def read_particles(path):
-    root = ET.parse(path).getroot()
-    arrays = {}
-    for node in root.iter("DataArray"):
-        name = node.get("Name")
-        if name is None or node.get("format") != "ascii":
-            continue
-        values = np.array(node.text.split(), dtype=float)
-        components = int(node.get("NumberOfComponents", "1"))
-        arrays[name] = values.reshape(-1, components) if components > 1 else values
+    """(time, {name: array}) of a particle snapshot (run_metrics.read_vtu reads the arrays)."""
+    points, _, arrays = read_vtu(path)
+    arrays.setdefault("position", points)
     time = None
-    for node in root.iter("DataArray"):
+    for node in ET.parse(path).getroot().iter("DataArray"):
         if node.get("Name") == "TimeValue":
             time = float(node.text)
     for key in ("position", "displacement", "material"):

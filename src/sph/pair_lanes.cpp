@@ -78,8 +78,6 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
   const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
   const bool viscosity_hoop = axisymmetric && options_.viscosity_hoop;
   const double inverse_ring_radius_i = inverse_ring_radius(fi[P::x]);
-  constexpr double inverse_two_pi = 0.5 / M_PI;
-  const double inverse_ring_weight_i = inverse_ring_radius_i * inverse_two_pi;
   const Lanes zero{};
   Lanes acc[D] = {}, mu_max{}, count{}, hoop_weight{}, viscous_hoop{};
   for (std::size_t e0 = 0; e0 < list.size(); e0 += pair_lanes) {
@@ -106,7 +104,7 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
     Lanes hoop_weight_j{}, viscous_hoop_j{};
     if (viscosity_hoop) {  // the viscosity's hoop shares (force_pass()), before the artificial stress joins d
       const auto shares = viscous_hoop_shares(dissipation[0], g.fj[P::m], mi, eta_j, eta_i,
-                                              inverse_ring_radius(g.fj[P::x]) * inverse_two_pi, inverse_ring_weight_i);
+                                              inverse_ring_radius(g.fj[P::x]), inverse_ring_radius_i);
       viscous_hoop += shares.i;
       viscous_hoop_j = shares.j;
     }
@@ -120,13 +118,11 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
         if (axisymmetric) {
           // The artificial stress's hoop weight, then an image's ring sign on the pair's R term
           // (force_pass(), "The hoop terms of the artificial viscosity and stress").
-          const Lanes term = has ? -(g.dx[0] * grad[0]) * fn : zero;
-          hoop_weight += term * g.fj[P::m] * inverse_ring_radius(g.fj[P::x]);
-          const Lanes reaction_weight = term * (mi * inverse_ring_radius_i);
-          for (int l = 0; l < pair_lanes; ++l) {
-            hoop_weight_j[l] = reaction_weight[l];
-            fn[l] *= ring_sign(g.j[l]);
-          }
+          const auto shares = tensile_hoop_shares(g.dx[0], grad[0], has ? fn : zero, g.fj[P::m], mi,
+                                                  inverse_ring_radius(g.fj[P::x]), inverse_ring_radius_i);
+          hoop_weight += shares.i;
+          hoop_weight_j = shares.j;
+          for (int l = 0; l < pair_lanes; ++l) fn[l] *= ring_sign(g.j[l]);
         }
         const auto ri = components(p_.tensile_term[i]);
         Lanes rij[6];

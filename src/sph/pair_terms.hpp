@@ -67,25 +67,36 @@ inline Lanes inverse_ring_radius(Lanes r) {
   return a != 0.0 ? one / (a != 0.0 ? a : one) : Lanes{};
 }
 
-// r-z: the artificial viscosity's hoop shares of a pair (SphSystem::force_pass(), "The hoop terms
-// of the artificial viscosity and stress"). The pair's viscous term m_j Pi_ij grad W, Pi_ij = K_ij /
-// eta_mean, weighs its neighbours by ring mass; its planar (Cartesian) form (m_j / w_j) K_ij /
-// rho_mean grad W, w = 2 pi |r|, rho = eta / w, gives no force in a uniform compression. The
-// shares are the planar form's radial term minus the ring form's: i gets
-// -d_r m_j (eta_mean / (w_j rho_mean) - 1), j gets +d_r m_i (eta_mean / (w_i rho_mean) - 1), with
-// d_r = Pi_ij dW/dr_i the pair's viscous term (radial). inv_w = 1 / w, 0 for a point on the
-// axis (no share).
+// r-z: the hoop shares of a pair (SphSystem::force_pass(), "The hoop terms of the artificial
+// viscosity and stress"), for i and for j; inv_r = 1 / |r| (inverse_ring_radius), 0 on the axis.
 template <class T>
-struct ViscousHoop {
+struct HoopShares {
   T i, j;
 };
+
+// The artificial stress's: (m_j / |r_j|) (r_j - r_i) f^n dW/dr_i for i and its mirror for j, with
+// dx_r = r_i - r_j and grad_r = dW/dr_i (the pair's gradient, radial); the row multiplies each
+// sum by -R_tt of its particle.
 template <class T, class Ti>
-inline ViscousHoop<T> viscous_hoop_shares(T d_r, T m_j, Ti m_i, T eta_j, Ti eta_i, T inv_w_j, Ti inv_w_i) {
-  const T ratio = (eta_i + eta_j) / (eta_i * inv_w_i + eta_j * inv_w_j);  // eta_mean / rho_mean
+inline HoopShares<T> tensile_hoop_shares(T dx_r, T grad_r, T fn, T m_j, Ti m_i, T inv_r_j, Ti inv_r_i) {
+  const T term = -(dx_r * grad_r) * fn;
+  return {term * m_j * inv_r_j, term * (m_i * inv_r_i)};
+}
+
+// The artificial viscosity's. The pair's viscous term m_j Pi_ij grad W, Pi_ij = K_ij / eta_mean,
+// weighs its neighbours by ring mass; its planar (Cartesian) form (m_j / w_j) K_ij / rho_mean
+// grad W, w = 2 pi |r|, rho = eta / w, gives no force in a uniform compression. The shares are
+// the planar form's radial term minus the ring form's: i gets -d_r m_j (eta_mean / (w_j rho_mean)
+// - 1), j gets +d_r m_i (eta_mean / (w_i rho_mean) - 1), with d_r = Pi_ij dW/dr_i the pair's
+// viscous term (radial). eta_mean / (w rho_mean) does not change when 1 / w is scaled: 1 / |r|
+// stands for 1 / w.
+template <class T, class Ti>
+inline HoopShares<T> viscous_hoop_shares(T d_r, T m_j, Ti m_i, T eta_j, Ti eta_i, T inv_r_j, Ti inv_r_i) {
+  const T ratio = (eta_i + eta_j) / (eta_i * inv_r_i + eta_j * inv_r_j);
   const T zero{};
-  ViscousHoop<T> out;
-  out.i = inv_w_j != 0.0 ? -d_r * m_j * (ratio * inv_w_j - 1.0) : zero;
-  out.j = inv_w_j != 0.0 ? d_r * m_i * (ratio * inv_w_i - 1.0) : zero;
+  HoopShares<T> out;
+  out.i = inv_r_j != 0.0 ? -d_r * m_j * (ratio * inv_r_j - 1.0) : zero;
+  out.j = inv_r_j != 0.0 ? d_r * m_i * (ratio * inv_r_i - 1.0) : zero;
   return out;
 }
 

@@ -194,19 +194,18 @@ void SphSystem<D>::force_pass(bool write_rates) {
         const double mu = viscous.mu;
         if (viscous.approaching) mu_max = std::max(mu_max, -mu);
         if (axisymmetric && options_.viscosity_hoop) {  // as force_row_lanes: the viscosity's hoop shares
-          constexpr double inverse_two_pi = 0.5 / M_PI;
           const auto shares = viscous_hoop_shares(viscous.dissipation[0], m[j], m[i], eta[j], eta[i],
-                                                  inverse_ring_radius(x[j][0]) * inverse_two_pi,
-                                                  inverse_ring_radius(x[i][0]) * inverse_two_pi);
+                                                  inverse_ring_radius(x[j][0]), inverse_ring_radius(x[i][0]));
           viscous_hoop += shares.i;
           if (j < n) own[j].viscous_hoop += shares.j;
         }
         if (tensile && (factors_.has_tensile[i] | factors_.has_tensile[j])) {
           double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
           if (axisymmetric) {  // as force_row_lanes: the hoop weight, then the ring sign of an image
-            const double term = -(dx[0] * grad_a[0]) * fn;
-            hoop_weight += term * m[j] * inverse_ring_radius(x[j][0]);
-            if (j < n) own[j].tensile_hoop_weight += term * m[i] * inverse_ring_radius(x[i][0]);
+            const auto shares = tensile_hoop_shares(dx[0], grad_a[0], fn, m[j], m[i], inverse_ring_radius(x[j][0]),
+                                                    inverse_ring_radius(x[i][0]));
+            hoop_weight += shares.i;
+            if (j < n) own[j].tensile_hoop_weight += shares.j;
             fn *= ring_sign(j);
           }
           const auto r_sum = components(p_.tensile_term[i] + p_.tensile_term[j]);

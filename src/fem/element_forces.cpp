@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "fem/edge_viscosity.hpp"
 #include "fem/element_gather.hpp"
+#include "fem/subzonal_pressure.hpp"
 
 namespace camouflet {
 
@@ -221,6 +223,43 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
         fh[i][a] = h;
         fe[i][a] += h;
       }
+  }
+
+  // The edge viscosity's forces and the subzonal pressures' from the last kinematics
+  // (edge_viscosity.hpp, subzonal_pressure.hpp: f_a = sum_s dp_s dV_s/dx_a); in the r-z area
+  // form planar, times each node's ring factor.
+  if (!el.edge_force.empty() || !el.subzone_pressure.empty()) {
+    using E = ElementEdges<D>;
+    const bool ring_volumes = axi && !area;
+    for (int l = 0; l < count; ++l) {
+      const std::size_t e = lanes.at(l);
+      double fl[D][N] = {};
+      if (!el.edge_force.empty()) {
+        const double* force = &el.edge_force[e * static_cast<std::size_t>(E::count * D)];
+        for (int k = 0; k < E::count; ++k)
+          for (int i = 0; i < D; ++i) {
+            fl[i][E::node[k][0]] += force[k * D + i];
+            fl[i][E::node[k][1]] -= force[k * D + i];
+          }
+      }
+      if (!el.subzone_pressure.empty()) {
+        double xl[D][N], v_s[N], grad[N][D][N];
+        for (int i = 0; i < D; ++i)
+          for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l];
+        subzone_volumes<D>(xl, ring_volumes, v_s, grad);
+        for (int s = 0; s < N; ++s) {
+          const double dp = el.subzone_pressure[e * N + static_cast<std::size_t>(s)];
+          if (dp == 0.0) continue;
+          for (int i = 0; i < D; ++i)
+            for (int a = 0; a < N; ++a) fl[i][a] += dp * grad[s][i][a];
+        }
+      }
+      for (int a = 0; a < N; ++a) {
+        const double ring =
+            area ? ring_factor_[static_cast<std::size_t>(connectivity[e * N + static_cast<std::size_t>(a)])] : 1.0;
+        for (int i = 0; i < D; ++i) fe[i][a][l] += ring * fl[i][a];
+      }
+    }
   }
 
   // Lane by lane, node by node: the node's D force values and, when asked

@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "fem/element_gather.hpp"
+#include "fem/subzonal_pressure.hpp"
 
 namespace camouflet {
 
@@ -61,6 +62,36 @@ double FemElements<D>::volume_of(const double* x, std::size_t e) const {
   double r_bar = 0.0;
   const double w = ring_weight<D>(axisymmetric_, xe, r_bar);
   return Shape<D>::gradients(xe, b) * w;
+}
+
+template <int D>
+void FemElements<D>::set_subzonal_pressure(double kappa, const double* x) {
+  subzonal_coefficient = kappa;
+  if (!(kappa > 0.0)) {
+    subzone_fraction.clear(), subzone_pressure.clear(), subzone_volume.clear();
+    return;
+  }
+  const std::size_t n = size();
+  subzone_fraction.assign(n * nodes, 0.0);
+  subzone_pressure.assign(n * nodes, 0.0);
+  subzone_volume.assign(n * nodes, 0.0);
+  for (std::size_t e = 0; e < n; ++e) {
+    NodeValues<D> xe;
+    gather<D>(x, &connectivity[e * nodes], xe);
+    double v[nodes];
+    subzone_volumes<D>(xe, axisymmetric_ && !area_weighted_, v);  // the r-z area form: areas
+    double total = 0.0;
+    for (int s = 0; s < nodes; ++s) total += v[s];
+    for (int s = 0; s < nodes; ++s) {
+      if (!(v[s] > 0.0))
+        throw InputError(SourceLocation{{}, 0, 0, "mesh"},
+                         fmt::format("element {}: the subzone of its node {} has volume {:.6g} at the start "
+                                     "(subzonal pressures need every corner of every element convex)",
+                                     e + 1, s + 1, v[s]));
+      subzone_fraction[e * nodes + static_cast<std::size_t>(s)] = v[s] / total;
+      subzone_volume[e * nodes + static_cast<std::size_t>(s)] = v[s];
+    }
+  }
 }
 
 template <int D>

@@ -23,8 +23,9 @@ struct ViscosityControl {
   double quadratic = 1.5;  // c_quadratic
   double linear = 0.06;    // c_linear
   // The compression q acts on: the strain rate along the element's
-  // acceleration (Wilkins 1980), or the volumetric rate tr D.
-  bool along_acceleration = false;
+  // acceleration (Wilkins 1980), or the volumetric rate tr D; or no q but a
+  // force on each closing edge (edge_viscosity.hpp).
+  ViscosityForm form = ViscosityForm::volumetric;
 };
 
 // add_internal_forces assembles the nodal forces on several threads without
@@ -52,7 +53,7 @@ struct KinematicsResult {
   // negative corner) is not flagged: it still has a valid one-point integral.
   std::int64_t tangled_element = -1;
   int tangled_corners = 0;
-  double viscous_work = 0.0;  // J, -sum q dV over this step
+  double viscous_work = 0.0;  // J, -sum q dV (or the edge forces' work) over this step
 };
 
 template <int D>
@@ -131,6 +132,17 @@ class FemElements {
   std::vector<double> volume;                  // m^3, at the latest kinematics
   std::vector<SymTensor> stress;               // Pa, sigma = s - p I at the latest material update
   std::vector<double> viscosity;               // Pa, artificial bulk viscosity q
+  // N, e * edges * D: the edge viscosity's force on each edge's first node (its second takes the
+  // opposite) from the latest kinematics; empty unless [run.viscosity] form = "edge".
+  std::vector<double> edge_force;
+  // Subzonal pressures (subzonal_pressure.hpp), e * nodes each; empty unless
+  // [run.hourglass] subzonal > 0: each corner subzone's share of the element's mass, its
+  // pressure difference dp_s (Pa) and volume V_s (m^3) at the latest kinematics.
+  std::vector<double> subzone_fraction, subzone_pressure, subzone_volume;
+  double subzonal_coefficient = 0.0;  // kappa in dp_s = kappa c^2 (rho_s - rho_z)
+  // Subzonal pressures with coefficient kappa from the positions x at set-up (each subzone keeps
+  // the mass of its initial volume).
+  void set_subzonal_pressure(double kappa, const double* x);
   std::vector<double> density;                 // kg/m^3
   std::vector<double> wave_speed;              // m/s, sqrt(c^2 + 4G/3rho) of the latest update
   std::vector<double> stable_wave_speed;       // m/s, the same with the stable sound speed (the dt vote's)

@@ -10,7 +10,9 @@
 #include <type_traits>
 
 #include "core/error.hpp"
+#include "fem/edge_viscosity.hpp"
 #include "fem/element_gather.hpp"
+#include "fem/subzonal_pressure.hpp"
 #include "fem/fem_elements.hpp"
 #include "fem/parallel.hpp"
 
@@ -55,6 +57,12 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
   std::int64_t tangled = std::numeric_limits<std::int64_t>::max();
   double viscous_work = 0.0;
+  const bool edges = visc.form == ViscosityForm::edge;
+  const bool subzones = !subzone_pressure.empty();
+  // r-z area form: planar subzone areas and median lengths, the nodes' ring factors apply them
+  // (element_forces.cpp).
+  const bool ring_volumes = axi && !area_weighted_;
+  constexpr std::size_t edge_values = static_cast<std::size_t>(ElementEdges<D>::count * D);
 #pragma omp parallel for schedule(static) reduction(min : bad, tangled) reduction(+ : viscous_work) if (static_cast<std::int64_t>(ne) > parallel_threshold)
   for (std::int64_t k = 0; k < packs; ++k) {
     const std::size_t e0 = static_cast<std::size_t>(k) * W;
@@ -122,8 +130,8 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
     // coasting inwards) compresses across the flow, not along a, and takes
     // no q, where tr D would heat it (docs/theory-fem.md, "Artificial
     // viscosity"). The in-plane part only in r-z: a has no hoop component.
-    Pack div{};
-    if (visc.along_acceleration) {
+    Pack div{};  // the edge form: no q
+    if (visc.form == ViscosityForm::acceleration) {
       Pack abar[D] = {}, a2{};
       for (int i = 0; i < D; ++i) {
         for (int n = 0; n < N; ++n) abar[i] += ve[i][n] - ae[i][n];
@@ -133,7 +141,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       for (int i = 0; i < D; ++i)
         for (int j = 0; j < D; ++j) ala += abar[i] * L[i][j] * abar[j];
       for (int l = 0; l < W; ++l) div[l] = a2[l] > 0.0 ? ala[l] / a2[l] : 0.0;
-    } else {
+    } else if (visc.form == ViscosityForm::volumetric) {
       div = L[0][0] + L[1][1] + L[2][2];
     }
     const Pack q_all = rho * le *
@@ -155,7 +163,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       whole = !eroded[e0 + static_cast<std::size_t>(l)] && vol[l] > 0.0 && std::isfinite(vol[l]);
     int batch_index = -1;
     double *pts_density = nullptr, *pts_density_previous = nullptr, *pts_viscosity = nullptr,
-           *pts_length = nullptr;
+           *pts_length = nullptr, *pts_energy = nullptr;
     SymTensor* pts_strain_rate = nullptr;
     Spin* pts_spin = nullptr;
     for (int l = 0; l < count; ++l) {
@@ -188,6 +196,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         pts_spin = pts.spin.data();
         pts_viscosity = pts.artificial_viscosity.data();
         pts_length = pts.characteristic_length.data();
+        pts_energy = pts.specific_energy.data();
       }
       const std::size_t p = point[e];
       pts_density_previous[p] = pts_density[p];
@@ -196,6 +205,42 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       pts_spin[p] = Spin{w_xy[l], w_yz[l], w_zx[l]};
       pts_viscosity[p] = q_mean[l];
       pts_length[p] = le[l];
+      if (subzones) {
+        // The subzones' pressure differences at t_(n+1); their forces' work over this step, the
+        // old and the new dp_s each over half of dV_s (as q's), goes into the element. The r-z
+        // area form measures the subzones by their areas and books the work on the ring 2 pi r_bar.
+        double xl[D][N], v_new[N];
+        for (int i = 0; i < D; ++i)
+          for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l];
+        subzone_volumes<D>(xl, ring_volumes, v_new);
+        double total = 0.0;
+        for (int a = 0; a < N; ++a) total += v_new[a];
+        const double stiffness = subzonal_coefficient * wave_speed[e] * wave_speed[e] * rho[l];
+        double work = 0.0;
+        for (int a = 0; a < N; ++a) {
+          const std::size_t k = e * N + static_cast<std::size_t>(a);
+          const double dp = stiffness * (subzone_fraction[k] * total / v_new[a] - 1.0);
+          work -= 0.5 * (subzone_pressure[k] + dp) * (v_new[a] - subzone_volume[k]);
+          subzone_pressure[k] = dp;
+          subzone_volume[k] = v_new[a];
+        }
+        pts_energy[p] += work * (area_weighted_ ? w[l] : 1.0) / mass[e];
+      }
+      if (edges) {
+        // The edge forces at t_(n+1) from x(n+1), v(n+1/2); the work of the old and the new
+        // forces over this step, each for its half (the trapezoid of q's work above), heats the
+        // element before its material update.
+        double xl[D][N], vl[D][N];
+        for (int i = 0; i < D; ++i)
+          for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l], vl[i][a] = ve[i][a][l];
+        double* force = &edge_force[e * edge_values];
+        const double old_power = edge_viscous_power<D>(force, vl);
+        edge_viscous_forces<D>(xl, vl, ring_volumes, rho[l], wave_speed[e], visc.quadratic, visc.linear, force);
+        const double heat =
+            0.5 * dt * (old_power + edge_viscous_power<D>(force, vl)) * (area_weighted_ ? w[l] : 1.0);
+        pts_energy[p] += heat / mass[e];
+        viscous_work += heat;
+      }
       if (!whole) {
         volume[e] = vol_l;
         density[e] = rho[l];

@@ -7,6 +7,7 @@
 #include <array>
 
 #include "core/error.hpp"
+#include "fem/edge_viscosity.hpp"
 #include "fem/fem_package.hpp"
 #include "model/geostatic_stress.hpp"
 
@@ -118,7 +119,10 @@ FemPackage<D>::FemPackage(const Model& model) : model_(&model) {
     hourglass_force.assign(nn * D, 0.0);
     hourglass_force_previous.assign(nn * D, 0.0);
   }
-  viscosity = {model.run.viscosity_quadratic, model.run.viscosity_linear, model.run.viscosity_along_acceleration};
+  viscosity = {model.run.viscosity_quadratic, model.run.viscosity_linear, model.run.viscosity_form};
+  elements.set_subzonal_pressure(model.run.subzonal_pressure, position.data());
+  if (viscosity.form == ViscosityForm::edge)
+    elements.edge_force.assign(ne * ElementEdges<D>::count * D, 0.0);
 }
 
 // The geostatic initial state of the FEM soil parts under gravity (docs/theory/gravity.md): each

@@ -30,6 +30,10 @@ void FemPackage<D>::visit_state(StateVisitor& v) {
     visit(v, "volume", e.volume);
     visit(v, "stress", e.stress);
     visit(v, "viscosity", e.viscosity);
+    visit(v, "edge_force", e.edge_force);
+    visit(v, "subzone_fraction", e.subzone_fraction);
+    visit(v, "subzone_pressure", e.subzone_pressure);
+    visit(v, "subzone_volume", e.subzone_volume);
     visit(v, "density", e.density);
     visit(v, "wave_speed", e.wave_speed);
     visit(v, "stable_wave_speed", e.stable_wave_speed);

@@ -25,6 +25,8 @@ const char* to_string(GeometryMode mode);
 inline int dimension_of(GeometryMode mode) { return mode == GeometryMode::three_d ? 3 : 2; }
 
 enum class HourglassForm { viscous, stiffness, none };
+// The FEM artificial viscosity ([run.viscosity] form).
+enum class ViscosityForm { acceleration, volumetric, edge };
 
 // Flanagan-Belytschko hourglass control of the one-point elements: the run's
 // default ([run.hourglass]) or a part's own (`hourglass` of a [[parts]] entry).
@@ -45,14 +47,18 @@ struct RunControl {
   // Artificial bulk viscosity q = rho l (c_quadratic^2 l |tr D| - c_linear c) tr D, compression only.
   double viscosity_quadratic = 1.5;
   double viscosity_linear = 0.06;
-  // q on the strain rate along the acceleration (Wilkins 1980; true, the default: a smooth
-  // convergence takes no q) or on tr D (false, the classic form): docs/theory-fem.md.
-  bool viscosity_along_acceleration = true;
+  // q on the strain rate along the acceleration (Wilkins 1980, the default: a smooth
+  // convergence takes no q), on tr D (the classic form), or a force on each closing edge
+  // (Caramana, Shashkov and Whalen 1998): docs/theory-fem.md.
+  ViscosityForm viscosity_form = ViscosityForm::acceleration;
   // r-z momentum in area-weighted form (Wilkins 1964) instead of the volume form
   // (the default): keeps converging spherical flow spherical; docs/theory-fem.md.
   bool area_weighted_momentum = false;
   HourglassForm hourglass = HourglassForm::viscous;
   double hourglass_coefficient = 0.1;
+  // Subzonal pressures (Caramana and Shashkov 1998) with this coefficient on every FEM element,
+  // besides the hourglass form; 0 = none (fem/subzonal_pressure.hpp, docs/theory-fem.md).
+  double subzonal_pressure = 0.0;
   // Gravitational acceleration (m/s^2; axisymmetric: (r, z), only along z): a body force m g on
   // every node and particle, its work booked in the energy balance (docs/theory/gravity.md).
   std::array<double, 3> gravity{};

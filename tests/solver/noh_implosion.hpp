@@ -81,7 +81,7 @@ inline NohResult run_noh(const NohSpec& spec) {
   Model model;
   model.run.viscosity_quadratic = spec.quadratic;
   model.run.viscosity_linear = spec.linear;
-  model.run.viscosity_along_acceleration = spec.along_acceleration;
+  model.run.viscosity_form = spec.along_acceleration ? ViscosityForm::acceleration : ViscosityForm::volumetric;
   model.run.area_weighted_momentum = spec.area_momentum;
   model.run.end_time = spec.end_time;
   model.run.cfl = 0.5;

@@ -38,6 +38,12 @@ struct SphOptions {
   // Off by default: on, the r-z Sedov blast's shock runs 11 % further along the equator than
   // along the axis (0.505 against 0.455 m; 0.485 m in both without), docs/theory/sph.md.
   bool viscosity_hoop = false;
+  // r-z only, volume form only: the stress's hoop term with the ring sum's own weights,
+  // -(2 pi / eta_i) sum_j V_j (r_j - r_i) dW/dr_i sigma_tt,j, and its energy conjugate, the hoop
+  // strain rate (2 pi rho_i / eta_i) sum_j V_j (r_j - r_i) dW/dr_i v_r,j, in place of the point
+  // values -sigma_tt / (rho r) and v_r / r; the density then follows that hoop rate instead of
+  // eta / (2 pi r) (docs/theory/sph.md, "The hoop term smoothed as the ring sum is"). Off by default.
+  bool smoothed_hoop = false;
   double viscosity_alpha_min = 0.1;
   double viscosity_switch_decay = 0.2;
   // Artificial stress against the tensile instability (Gray, Monaghan & Swift

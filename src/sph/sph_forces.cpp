@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/sym_tensor_vec.hpp"
 #include "sph/artificial_stress.hpp"
@@ -140,6 +141,15 @@ void SphSystem<D>::force_pass(bool write_rates) {
   refresh_active_pairs();
   size_point_factors();
   if (axisymmetric && pair_hoop_.size() != n) pair_hoop_.assign(n, 0.0);
+  const bool smoothed_hoop = axisymmetric && options_.smoothed_hoop;
+  if (smoothed_hoop && image_hoop_.size() != n) image_hoop_.assign(n, 0.0);
+  const std::size_t coupling_begin = external_begin_;  // coupling points take no part in the smoothed hoop term
+  if (smoothed_hoop) {
+    hoop_sigma_.resize(coupling_begin);
+    for (std::size_t k = 0; k < n; ++k) hoop_sigma_[k] = p_.stress[k].zz;
+    for (std::size_t g = 0; g < ghosts_.size(); ++g) hoop_sigma_[n + g] = hoop_sigma_[ghosts_[g].source];
+  }
+  const auto& volume = factors_.volume;
   pair_dissipation_.resize(active_.upper_index()[n]);
   prepare_row_blocks();
   const RowBlocks& blocks = row_blocks_;
@@ -162,12 +172,12 @@ void SphSystem<D>::force_pass(bool write_rates) {
     fill_point_factors();
     // Blocks handed out one at a time (prepare_row_blocks()); rows are added up after the barrier.
     for_each_row_block(blocks, force_sums_, [&](std::size_t i, ForceSum* own) {
-      if (!options_.kernel_correction) {  // SIMD lanes (pair_lanes.cpp), the same sums
+      if (!options_.kernel_correction && !smoothed_hoop) {  // SIMD lanes (pair_lanes.cpp), the same sums
         force_row_lanes(i, own);
         return;
       }
       Vec<D> acc{};
-      double mu_max = 0.0, hoop_weight = 0.0, viscous_hoop = 0.0;
+      double mu_max = 0.0, hoop_weight = 0.0, viscous_hoop = 0.0, hoop_stress = 0.0, image_hoop_stress = 0.0;
       int count = 0;
       const std::size_t base = active_.upper_index()[i];
       const auto list = active_upper_neighbours(i);
@@ -211,6 +221,16 @@ void SphSystem<D>::force_pass(bool write_rates) {
           const auto r_sum = components(p_.tensile_term[i] + p_.tensile_term[j]);
           subtract_tensile_pair<D>(true, r_sum.data(), grad_a, fn, viscous.dissipation);
         }
+        if (smoothed_hoop && j < coupling_begin) {
+          // The hoop term with the ring sum's weights V_j (r_j - r_i) dW/dr_i (symmetric in i, j).
+          const double weight = (x[j][0] - x[i][0]) * grad_a[0];
+          const double term = volume[j] * weight * hoop_sigma_[j];
+          hoop_stress += term;
+          if (j < n)
+            own[j].hoop_stress += volume[i] * weight * hoop_sigma_[i];
+          else if (ring_sign(j) < 0.0)
+            image_hoop_stress += term;
+        }
         Vec<D>& dissipation = pair_dissipation_[base + e];
         for (int a = 0; a < D; ++a) dissipation[a] = viscous.dissipation[a];
         const auto s_i = components(p_.stress_term[i]), s_j = components(p_.stress_term[j]);
@@ -234,6 +254,8 @@ void SphSystem<D>::force_pass(bool write_rates) {
       mine.count += count;
       mine.tensile_hoop_weight += hoop_weight;
       mine.viscous_hoop += viscous_hoop;
+      mine.hoop_stress += hoop_stress;
+      mine.image_hoop_stress += image_hoop_stress;
     });
     auto add = [](ForceSum& total, const ForceSum& part) {
       total.acceleration += part.acceleration;
@@ -241,6 +263,8 @@ void SphSystem<D>::force_pass(bool write_rates) {
       total.count += part.count;
       total.tensile_hoop_weight += part.tensile_hoop_weight;
       total.viscous_hoop += part.viscous_hoop;
+      total.hoop_stress += part.hoop_stress;
+      total.image_hoop_stress += part.image_hoop_stress;
     };
     // The totals: the accelerations (write_rates), and in r-z the hoop terms of the artificial
     // viscosity and stress, which the kick books also after a restart (force_pass(false)).
@@ -262,9 +286,16 @@ void SphSystem<D>::force_pass(bool write_rates) {
           if (tensile) pair_hoop_[i] -= p_.tensile_term[i].zz * total.tensile_hoop_weight;
           total.acceleration[0] += pair_hoop_[i];
         }
+        // The smoothed hoop term -(2 pi / eta_i) sum_j V_j (r_j - r_i) dW/dr_i sigma_tt,j; its images'
+        // part is booked by the kick (book_axis_image_work), also after a restart.
+        const double hoop_scale = smoothed_hoop ? -2.0 * std::numbers::pi / p_.planar_density[i] : 0.0;
+        if (smoothed_hoop) image_hoop_[i] = hoop_scale * total.image_hoop_stress;
         if (!write_rates) return;
-        if (axisymmetric && x[i][0] > 0.0)  // hoop stress: -sigma_tt / (rho r) e_r
+        if (smoothed_hoop) {
+          total.acceleration[0] += hoop_scale * total.hoop_stress;
+        } else if (axisymmetric && x[i][0] > 0.0) {  // hoop stress: -sigma_tt / (rho r) e_r
           total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
+        }
         p_.acceleration[i] = total.acceleration;
         p_.compression_rate[i] = total.compression_rate;
         p_.neighbour_count[i] = total.count;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/sym_tensor_vec.hpp"
 #include "sph/pair_terms.hpp"
@@ -98,6 +99,7 @@ void SphSystem<D>::update_state(double dt, double time) {
   predict_mid_step(dt);
   refresh_ghosts();
   const bool corrected = options_.kernel_correction;
+  const bool smoothed_hoop = mode_ == GeometryMode::axisymmetric && options_.smoothed_hoop;
   if (corrected) compute_correction();
   refresh_active_pairs();
   size_point_factors();
@@ -116,13 +118,14 @@ void SphSystem<D>::update_state(double dt, double time) {
     fill_point_factors();
     // Blocks handed out one at a time, as in force_pass().
     for_each_row_block(blocks, kinematic_sums_, [&](std::size_t i, KinematicSum* own) {
-      if (corrected)
+      if (corrected || smoothed_hoop)
         corrected_kinematics_row(i, own);
       else
         kinematics_row_lanes(i, own);  // SIMD lanes (pair_lanes.cpp), the same sums
     });
     auto add = [](KinematicSum& total, const KinematicSum& part) {
       total.rate += part.rate;
+      total.hoop += part.hoop;
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
     };
@@ -175,6 +178,8 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
   const bool volume_form = options_.volume_form;
   const auto& volume = factors_.volume;
   const auto& inv_eta = factors_.inverse_density;
+  const bool smoothed_hoop = mode_ == GeometryMode::axisymmetric && options_.smoothed_hoop;
+  const std::size_t coupling_begin = external_begin_;
   KinematicSum mine;
   for (const std::uint32_t j : active_upper_neighbours(i)) {
     const Vec<D> dx = x[i] - x[j];
@@ -190,6 +195,12 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
     double dv_a[D], pair_grad_a[D];
     for (int a = 0; a < D; ++a) dv_a[a] = dv[a], pair_grad_a[a] = pair_grad[a];
     const KinematicPair<D, double> k = kinematic_pair<D>(dv_a, pair_grad_a, weight_i, weight_j);
+    if (smoothed_hoop && j < coupling_begin) {
+      // The smoothed hoop rate's sum, the same weights as the smoothed hoop force (sph_forces.cpp).
+      const double w = (x[j][0] - x[i][0]) * pair_grad_a[0];
+      mine.hoop += volume[j] * w * v[j][0];
+      if (j < n) own[j].hoop += volume[i] * w * v[i][0];
+    }
     const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
     mine.rate += k.rate_i;
     for (int a = 0; a < D; ++a)
@@ -202,6 +213,7 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
     }
   }
   own[i].rate += mine.rate;
+  own[i].hoop += mine.hoop;
   for (int a = 0; a < D; ++a)
     for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
 }
@@ -216,7 +228,11 @@ bool SphSystem<D>::end_step_of_row(std::size_t i, const KinematicSum& total, dou
     for (int b = 0; b < D; ++b) L[a][b] = total.L[a][b];
   // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
   // matches the momentum sum (energy-consistent).
-  if (mode_ == GeometryMode::axisymmetric) L[2][2] = p_.velocity[i][0] / p_.position[i][0];  // hoop: v_r / r
+  const bool smoothed_hoop = mode_ == GeometryMode::axisymmetric && options_.smoothed_hoop;
+  if (smoothed_hoop)  // the conjugate of the smoothed hoop force: (2 pi rho / eta) sum_j V_j w_ij v_r,j
+    L[2][2] = 2.0 * std::numbers::pi * p_.density[i] / p_.planar_density[i] * total.hoop;
+  else if (mode_ == GeometryMode::axisymmetric)
+    L[2][2] = p_.velocity[i][0] / p_.position[i][0];  // hoop: v_r / r
   SymTensor d{L[0][0],
               L[1][1],
               L[2][2],
@@ -250,7 +266,10 @@ bool SphSystem<D>::end_step_of_row(std::size_t i, const KinematicSum& total, dou
   // The shared constitutive update's inputs: row i's slot in its material's batch.
   MaterialPoints& pts = batches_[p_.material[i]];
   const std::size_t slot = p_.slot[i];
-  const double rho = eta_new / geometric_weight(x_end[i]);
+  // The density: eta / (2 pi r), whose hoop rate is v_r / r; with the smoothed hoop rate it
+  // follows that rate instead, d ln rho = d ln eta - L_tt dt.
+  const double rho = smoothed_hoop ? p_.density[i] * (eta_new / scratch_eta_[i]) * std::exp(-dt * L[2][2])
+                                   : eta_new / geometric_weight(x_end[i]);
   pts.density_previous[slot] = p_.density[i];
   pts.density[slot] = rho;
   pts.strain_rate[slot] = d;

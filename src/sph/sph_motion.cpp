@@ -119,6 +119,7 @@ void SphSystem<D>::book_axis_image_work(double dt) {
   const bool tensile = options_.artificial_stress;
   const double power = options_.artificial_stress_power;
   const bool hoop = pair_hoop_.size() == n;
+  const bool smoothed = options_.smoothed_hoop && image_hoop_.size() == n;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const auto list = active_upper_neighbours(i);  // every image j >= n > i is in the upper part
@@ -127,6 +128,10 @@ void SphSystem<D>::book_axis_image_work(double dt) {
     const Vec<D> v_mean = (velocity_old_[i] + p_.velocity[i]) * 0.5;
     // The hoop terms of the artificial viscosity and stress have no pair partner: their work too.
     double work = hoop ? pair_hoop_[i] * v_mean[0] : 0.0;  // J/kg per s
+    // The smoothed hoop term ([sph] smoothed_hoop): the images' part of the force on i and the
+    // images' part of j's hoop rate, with mirrored v_r, do the same work where the conservative
+    // pairing would have them cancel: twice the force's work is taken back.
+    if (smoothed) work += 2.0 * image_hoop_[i] * v_mean[0];
     for (const std::uint32_t j : list) {
       if (!images) break;
       if (j < n || j >= images_end || image_sign_[j - n] > 0) continue;

@@ -39,6 +39,9 @@ SphOptions read_sph_options(Parameters& block) {
   o.volume_form = block.flag("volume_form", o.volume_form);
   o.xsph = block.in_range("xsph", 0.0, 1.0, o.xsph);
   o.kernel_correction = block.flag("kernel_correction", o.kernel_correction);
+  o.smoothed_hoop = block.flag("smoothed_hoop", o.smoothed_hoop);
+  if (o.smoothed_hoop && !o.volume_form)
+    block.fail("smoothed_hoop", "the smoothed hoop term is built on the volume form; it needs volume_form = true");
   o.skin_factor = block.non_negative("skin_factor", o.skin_factor);
   const double sort_interval = block.number("sort_interval", o.sort_interval);
   if (!(sort_interval >= 0.0 && sort_interval <= 1e6) || sort_interval != std::floor(sort_interval))

@@ -153,6 +153,7 @@ template <int D>
 void SphSystem<D>::gather_material_state() {
   const std::size_t n = p_.real;
   std::size_t bad = 0;  // non-finite points; the serial search below names the first
+  const bool smoothed_hoop = mode_ == GeometryMode::axisymmetric && options_.smoothed_hoop;
 #pragma omp parallel for schedule(static) reduction(+ : bad)
   for (std::size_t i = 0; i < n; ++i) {
     const auto& pts = batches_[p_.material[i]];
@@ -169,7 +170,9 @@ void SphSystem<D>::gather_material_state() {
     p_.plastic_strain[i] = pts.plastic_strain[k];
     p_.damage[i] = pts.damage[k];
     p_.temperature[i] = pts.temperature[k];
-    p_.stress_term[i] = sigma * (geometric_weight(p_.position[i]) / p_.planar_density[i]);
+    // S = sigma / rho (= w sigma / eta while rho = eta / w; the smoothed hoop rate lets rho part from it).
+    p_.stress_term[i] = sigma * (smoothed_hoop ? 1.0 / p_.density[i]
+                                               : geometric_weight(p_.position[i]) / p_.planar_density[i]);
     if (!std::isfinite(p + sigma.xx + sigma.yy + sigma.xy + p_.wave_speed[i])) ++bad;
   }
   for (std::size_t i = 0; i < n && bad > 0; ++i)

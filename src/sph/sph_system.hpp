@@ -250,6 +250,12 @@ class SphSystem {
   // r-z: the hoop terms of the artificial viscosity and stress of each particle (radial
   // acceleration, m/s^2), kept for the booking of their work (book_axis_image_work).
   std::vector<double> pair_hoop_;
+  // r-z, [sph] smoothed_hoop: the radial acceleration the axis images give each particle through
+  // the smoothed hoop term (m/s^2), for the booking of the images' mismatch.
+  std::vector<double> image_hoop_;
+  // r-z, [sph] smoothed_hoop: the hoop stress sigma_tt (Pa) of every particle and ghost, a ghost's
+  // its source's (force_pass()).
+  std::vector<double> hoop_sigma_;
   NeighbourSearch<D> search_;
   bool correction_current_ = false;
   double skin_ = 0.0;
@@ -295,10 +301,14 @@ class SphSystem {
     // (force_pass(), "The hoop terms of the artificial viscosity and stress").
     double tensile_hoop_weight = 0.0;
     double viscous_hoop = 0.0;
+    // r-z, [sph] smoothed_hoop: sum_j V_j (r_j - r_i) dW/dr_i sigma_tt,j over every neighbour
+    // but coupling points, and the part of it from images across the axis.
+    double hoop_stress = 0.0, image_hoop_stress = 0.0;
   };
   struct KinematicSum {
     double rate = 0.0;    // sum_j weight_j v_ij . grad W
     double L[D][D] = {};  // -sum_j weight_j v_ij (x) grad W
+    double hoop = 0.0;    // r-z, [sph] smoothed_hoop: sum_j V_j (r_j - r_i) dW/dr_i v_r,j
   };
   BlockSums<ForceSum> force_sums_;
   BlockSums<KinematicSum> kinematic_sums_;

@@ -106,10 +106,11 @@ std::pair<double, double> fit2(const std::vector<double>& f, const std::vector<d
 }
 
 template <int D>
-ColumnMotion run_column_motion(double cfl) {
+ColumnMotion run_column_motion(double cfl, bool smoothed_hoop) {
   const Model model = buried_charge_model<D>();
   SphOptions options;
   options.viscosity_alpha = 0.2;  // as the generated buried cases
+  options.smoothed_hoop = smoothed_hoop;
   std::vector<MirrorPlane> planes = axis_mirror_planes(model.run.mode);  // r-z: the axis
   if constexpr (D == 3) planes = {{0, 0.0, PlaneKind::symmetry}, {1, 0.0, PlaneKind::symmetry}};
   SphSystem<D> sph(model, options, planes);
@@ -184,13 +185,13 @@ struct Ensemble {
 };
 
 template <int D>
-Ensemble ensemble() {
+Ensemble ensemble(bool smoothed_hoop = false) {
   const double cfls[] = {0.4998, 0.4999, 0.5, 0.5001, 0.5002};
   Ensemble e;
   double uz_min[3], uz_max[3], ur_min[3], ur_max[3];
   for (int c = 0; c < 3; ++c) uz_min[c] = ur_min[c] = 1e30, uz_max[c] = ur_max[c] = -1e30;
   for (const double cfl : cfls) {
-    const ColumnMotion m = run_column_motion<D>(cfl);
+    const ColumnMotion m = run_column_motion<D>(cfl, smoothed_hoop);
     e.worst_energy_error = std::max(e.worst_energy_error, std::abs(m.energy_error));
     for (int c = 0; c < 3; ++c) {
       e.mean.uz[c] += m.uz[c] / std::size(cfls);
@@ -216,6 +217,12 @@ Ensemble ensemble() {
 const std::pair<Ensemble, Ensemble>& runs() {
   static const std::pair<Ensemble, Ensemble> both{ensemble<2>(), ensemble<3>()};
   return both;
+}
+
+// The r-z ensemble with [sph] smoothed_hoop (a few seconds more: r-z is 700 particles).
+const Ensemble& smoothed_runs() {
+  static const Ensemble rz{ensemble<2>(true)};
+  return rz;
 }
 
 // Single runs at main d47382d, 2 Dec 2026, 1 ms: u_z r-z / 3-D = 0.954, 0.984, 1.048 in columns
@@ -280,4 +287,36 @@ TEST(SphAxisReference, ProfileOfTheFirstTenSpacingsRecorded) {
         "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
         fmt::format("{:.3f}; {:.3f}", hoop, axial), std::abs(hoop - 1.0) < 0.05 && std::abs(axial - 1.0) < 0.05);
   }
+}
+
+// The r-z model with the smoothed hoop term and its conjugate hoop rate ([sph] smoothed_hoop,
+// docs/theory/sph.md, "The hoop term smoothed as the ring sum is"), recorded against the same 3-D
+// ensemble. At 6 Dec 2026 (ensemble means, 1 ms): hoop strain r-z / 3-D 0.87 0.98 1.14 1.01 0.99
+// 0.96 1.01 0.99 0.99 1.02 in the ten bins (the point hoop term: 0.74 0.68 0.78 0.81 0.82 0.85 0.93
+// 0.96 0.97 0.98), u_z 1.07 1.12 1.00 1.02 0.98 1.00 1.01 1.01 1.00 1.00; columns 1-3 u_r 0.99 0.96
+// 1.11, u_z 1.10 1.09 1.00. Recorded, not asserted: the option is off by default (the axial lead of
+// the first two columns, and the coarse buried case stops when a charge particle crosses the axis).
+TEST(SphAxisReference, SmoothedHoopProfileRecorded) {
+  const auto& ref = runs().second;
+  const Ensemble& rz = smoothed_runs();
+  EXPECT_LT(rz.worst_energy_error, 0.01);
+  for (int bin = 0; bin < kProfileBins; ++bin) {
+    const double hoop = rz.mean.profile_hoop[bin] / ref.mean.profile_hoop[bin];
+    const double axial = rz.mean.profile_uz[bin] / ref.mean.profile_uz[bin];
+    std::printf("smoothed hoop, r %d-%d dx: u_r / r0 r-z / 3-D %.3f; u_z %.3f\n", bin, bin + 1, hoop, axial);
+    test::record_observation(
+        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with the smoothed hoop term: soil {}-{} spacings "
+                    "from the axis, mean of 5 runs: r-z / 3-D of the hoop strain u_r / r0; of u_z",
+                    bin, bin + 1),
+        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
+        fmt::format("{:.3f}; {:.3f}", hoop, axial), std::abs(hoop - 1.0) < 0.05 && std::abs(axial - 1.0) < 0.05);
+  }
+  for (int c = 0; c < 3; ++c)
+    test::record_observation(
+        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with the smoothed hoop term: column {}, mean of 5 "
+                    "runs: r-z / 3-D of u_r; of u_z",
+                    c + 1),
+        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
+        fmt::format("{:.3f}; {:.3f}", rz.mean.ur[c] / ref.mean.ur[c], rz.mean.uz[c] / ref.mean.uz[c]),
+        std::abs(rz.mean.ur[c] / ref.mean.ur[c] - 1.0) < 0.05 && std::abs(rz.mean.uz[c] / ref.mean.uz[c] - 1.0) < 0.05);
 }

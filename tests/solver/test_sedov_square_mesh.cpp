@@ -109,3 +109,101 @@ TEST(SedovSquareMesh, PlaneBlastKeepsEveryElementUntangledWithSubzonalPressures)
   }
   EXPECT_LT(std::abs(with.energy_error), 0.02);
 }
+
+namespace {
+
+// The same blast in 3-D: the energy in the corner hex of an octant of 20^3 cubes (1.2 m), exact
+// front R = (E t^2 / (alpha rho))^(1/5), alpha = 0.851072 for gamma = 1.4 (Kamm and Timmes 2007),
+// E = 0.851072 J for the whole sphere, so R = t^(2/5). Hexes have no tangle warning (the corner
+// Jacobians are checked in 2-D only): here they are counted at the end.
+struct Blast3d {
+  int negative_corners = 0;  // corner Jacobians <= 0 over all elements at the end
+  double radius[3] = {};     // m, densest element within 8 degrees of the x axis, the xy diagonal, the body diagonal
+};
+
+Blast3d blast_3d(double subzonal, double end_time) {
+  test::use_threads(1);
+  constexpr int n = 20;
+  constexpr double side3 = 1.2, cell3 = side3 / n;
+  Model model;
+  model.run.mode = GeometryMode::three_d;
+  model.mesh.dimension = 3;
+  model.run.end_time = end_time;
+  model.run.cfl = 0.5;
+  model.run.subzonal_pressure = subzonal;
+  const double e0 = 0.851072 / 8.0 / (cell3 * cell3 * cell3);
+  model.materials.push_back({"cold", test::ideal_gas("cold", 1.0, 1.4, 1e-8), {}});
+  model.materials.push_back({"hot", test::ideal_gas("hot", 1.0, 1.4, e0), {}});
+  for (const char* name : {"cold", "hot"}) {
+    Part part;
+    part.name = name;
+    part.material = model.parts.empty() ? 0 : 1;
+    model.parts.push_back(part);
+  }
+  add_block(model.mesh, {"hot", 1, {0, 0, 0}, {cell3, cell3, cell3}, {1, 1, 1}});
+  add_block(model.mesh, {"b", 0, {cell3, 0, 0}, {side3 - cell3, cell3, cell3}, {n - 1, 1, 1}});
+  add_block(model.mesh, {"c", 0, {0, cell3, 0}, {side3, side3 - cell3, cell3}, {n, n - 1, 1}});
+  add_block(model.mesh, {"d", 0, {0, 0, cell3}, {side3, side3, side3 - cell3}, {n, n, n - 1}});
+  for (const char* set : {"hot.xmin", "c.xmin", "d.xmin"}) model.boundaries.push_back(test::symmetry(set, {1, 0, 0}));
+  for (const char* set : {"hot.ymin", "b.ymin", "d.ymin"}) model.boundaries.push_back(test::symmetry(set, {0, 1, 0}));
+  for (const char* set : {"hot.zmin", "b.zmin", "c.zmin"}) model.boundaries.push_back(test::symmetry(set, {0, 0, 1}));
+  Solver<3> solver(model);
+  while (solver.time() < end_time * (1 - 1e-12)) {
+    solver.limit_next_step(end_time - solver.time());
+    solver.step();
+  }
+  Blast3d b;
+  const auto& el = solver.elements();
+  const auto& x = solver.position();
+  // Node a's three neighbours, ordered so that the corner Jacobian of an undistorted hex is positive.
+  static constexpr int around[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
+                                       {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+  const double directions[3][3] = {{1, 0, 0}, {M_SQRT1_2, M_SQRT1_2, 0}, {1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}};
+  double peak[3] = {};
+  for (std::size_t e = 0; e < el.size(); ++e) {
+    double p[8][3], c[3] = {};
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) {
+        p[a][i] = x[static_cast<std::size_t>(el.connectivity[e * 8 + a] * 3 + i)];
+        c[i] += p[a][i] / 8;
+      }
+    for (int a = 0; a < 8; ++a) {
+      double u[3][3];
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) u[k][i] = p[around[a][k]][i] - p[a][i];
+      const double det = u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) -
+                         u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0]) +
+                         u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0]);
+      if (det <= 0.0) ++b.negative_corners;
+    }
+    const double r = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    for (int k = 0; k < 3; ++k) {
+      const double cosine = (c[0] * directions[k][0] + c[1] * directions[k][1] + c[2] * directions[k][2]) / r;
+      if (cosine < std::cos(8.0 * M_PI / 180.0) || el.density[e] <= peak[k]) continue;
+      peak[k] = el.density[e];
+      b.radius[k] = r;
+    }
+  }
+  return b;
+}
+
+}  // namespace
+
+// Recorded, not asserted: the subzonal pressures keep most hexes around the 3-D blast sound but
+// not all (docs/theory-fem.md, "Subzonal pressures and edge viscosity").
+TEST(SedovSquareMesh, CubeBlastRecorded) {
+  const double t = 0.5, exact = std::pow(t, 0.4);  // 0.758 m
+  const Blast3d with = blast_3d(1.0, t), without = blast_3d(0.0, t);
+  test::record_observation("Sedov point blast on a cube mesh (3-D octant, 20^3 hexes, t = 0.5 s): corner Jacobians "
+                           "<= 0 at the end, with subzonal pressures; without",
+                           "none", fmt::format("{}; {}", with.negative_corners, without.negative_corners),
+                           with.negative_corners == 0);
+  const char* direction[3] = {"along x", "xy diagonal", "body diagonal"};
+  for (int k = 0; k < 3; ++k)
+    test::record_observation(fmt::format("Sedov point blast on a cube mesh (3-D octant, 20^3 hexes, subzonal "
+                                         "pressures): densest element {} at t = 0.5 s / exact front",
+                                         direction[k]),
+                             "1 within 5 % (R = t^(2/5), Kamm and Timmes 2007)", fmt::format("{:.3f}", with.radius[k] / exact),
+                             std::abs(with.radius[k] / exact - 1.0) < 0.05);
+  EXPECT_LT(with.negative_corners, without.negative_corners);
+}

@@ -72,13 +72,6 @@ void read_run(TomlReader& r, Model& model) {
     run.viscosity_form = form == "edge"         ? ViscosityForm::edge
                          : form == "volumetric" ? ViscosityForm::volumetric
                                                 : ViscosityForm::acceleration;
-    // Built and measured for the volume form only: with the area form's ring factors the r-z
-    // point blast lost 14 % of its energy in 100 cycles (docs/theory-fem.md, "Subzonal pressures
-    // and edge viscosity").
-    if (run.viscosity_form == ViscosityForm::edge && run.area_weighted_momentum)
-      v->fail("form", "\"edge\" is not available with axisymmetric_momentum = \"area\" (its energy is not "
-                      "conserved there); use \"acceleration\" or \"volumetric\"");
-
     v->finish();
   }
   if (auto h = r.table("hourglass")) {
@@ -88,9 +81,6 @@ void read_run(TomlReader& r, Model& model) {
                                         : HourglassForm::viscous;
     run.hourglass_coefficient = h->non_negative("coefficient", run.hourglass_coefficient);
     run.subzonal_pressure = h->non_negative("subzonal", run.subzonal_pressure);
-    if (run.subzonal_pressure > 0.0 && run.area_weighted_momentum)
-      h->fail("subzonal", "subzonal pressures are not available with axisymmetric_momentum = \"area\" (not "
-                          "verified there); leave them at 0 or use the volume form");
     if (run.hourglass_coefficient > 0.5)
       h->fail("coefficient", fmt::format("must not exceed 0.5, got {}", run.hourglass_coefficient));
     h->finish();

@@ -234,10 +234,19 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         for (int i = 0; i < D; ++i)
           for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l], vl[i][a] = ve[i][a][l];
         double* force = &edge_force[e * edge_values];
-        const double old_power = edge_viscous_power<D>(force, vl);
+        // The heat is the work the forces take from the nodes: in the r-z area form each node
+        // feels its planar share times its ring factor (element_forces.cpp), so its velocity
+        // enters times that factor.
+        double vw[D][N];
+        for (int a = 0; a < N; ++a) {
+          const double ring =
+              area_weighted_ ? ring_factor_[static_cast<std::size_t>(connectivity[e * N + static_cast<std::size_t>(a)])]
+                             : 1.0;
+          for (int i = 0; i < D; ++i) vw[i][a] = ring * vl[i][a];
+        }
+        const double old_power = edge_viscous_power<D>(force, vw);
         edge_viscous_forces<D>(xl, vl, ring_volumes, rho[l], wave_speed[e], visc.quadratic, visc.linear, force);
-        const double heat =
-            0.5 * dt * (old_power + edge_viscous_power<D>(force, vl)) * (area_weighted_ ? w[l] : 1.0);
+        const double heat = 0.5 * dt * (old_power + edge_viscous_power<D>(force, vw));
         pts_energy[p] += heat / mass[e];
         viscous_work += heat;
       }

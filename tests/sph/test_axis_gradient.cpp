@@ -61,6 +61,16 @@ std::map<int, ColumnAcceleration> column_accelerations(const StressField& sigma,
   return columns;
 }
 
+// The elastic field around a spherical cavity of radius a under pressure p centred on the axis at
+// z = zc (Lame): sigma_RR = -p (a/R)^3, sigma_tt = +p/2 (a/R)^3, in equilibrium.
+auto lame_field(double p, double a, double zc) {
+  return [=](double r, double z) {
+    const double dz = z - zc, R = std::hypot(r, dz), s = std::pow(a / R, 3);
+    const double A = 0.5 * p * s, B = -1.5 * p * s, nr = r / R, nz = dz / R;
+    return SymTensor{A + B * nr * nr, A + B * nz * nz, A, B * nr * nz, 0, 0};
+  };
+}
+
 // Hydrostatic sigma = -p(z) I, p = p0 + g z: div sigma = -g e_z, no hoop
 // imbalance; a = -g / rho e_z everywhere.
 std::map<int, ColumnAcceleration> hydrostatic_column(double p0, double g, double spacing) {
@@ -184,11 +194,7 @@ TEST(SphAxis, SphericalEquilibriumFieldGivesNoForceNextToTheAxis) {
   // column felt an inward rho a_r of 0.81 |d sigma / dR|, the second 0.26, the third 0.15: the
   // (1/r) d(r R_rr)/dr of its ring sum with no -R_tt / r to balance it.
   const double p = 1e6, a = 0.1, zc = 0.5, spacing = 0.02;
-  auto lame = [&](double r, double z) {
-    const double dz = z - zc, R = std::hypot(r, dz), s = std::pow(a / R, 3);
-    const double A = 0.5 * p * s, B = -1.5 * p * s, nr = r / R, nz = dz / R;
-    return SymTensor{A + B * nr * nr, A + B * nz * nz, A, B * nr * nz, 0, 0};
-  };
+  const auto lame = lame_field(p, a, zc);
   // Rows 0.25-0.35 m below the centre; the scale is |d sigma_RR / dR| at R = 0.3 m.
   const double scale = 3.0 * p * std::pow(a / 0.3, 3) / 0.3;
   SphOptions no_artificial_stress;
@@ -319,11 +325,7 @@ TEST(SphAxisSmoothedHoop, HydrostaticFieldLeavesNoRadialForceInAnyColumn) {
 // the scale R: recorded per column.
 TEST(SphAxisSmoothedHoop, SphericalEquilibriumFieldRecorded) {
   const double p = 1e6, a = 0.1, zc = 0.5, spacing = 0.02;
-  auto lame = [&](double r, double z) {
-    const double dz = z - zc, R = std::hypot(r, dz), s = std::pow(a / R, 3);
-    const double A = 0.5 * p * s, B = -1.5 * p * s, nr = r / R, nz = dz / R;
-    return SymTensor{A + B * nr * nr, A + B * nz * nz, A, B * nr * nz, 0, 0};
-  };
+  const auto lame = lame_field(p, a, zc);
   const double scale = 3.0 * p * std::pow(a / 0.3, 3) / 0.3;
   SphOptions smoothed;
   smoothed.smoothed_hoop = true;

@@ -31,8 +31,10 @@
 // Relano 2012): the 2-D kernel sums act on eta = 2 pi r rho, and the hoop
 // terms come from writing the r-z divergence of the stress as
 // div(r sigma) - sigma_tt e_r. The artificial stress has the hoop term of its own ring sum
-// (and [sph] viscosity_hoop one for the viscosity), sph_forces.cpp. The axis is a mirror plane
-// (boundary/mirror_planes.hpp).
+// (and [sph] viscosity_hoop one for the viscosity), sph_forces.cpp. [sph] smoothed_hoop writes
+// the stress's hoop term and the hoop rate with the ring sum's own kernel weights, energy
+// conjugates of each other, and lets rho follow that rate (sph_options.hpp). The axis is a mirror
+// plane (boundary/mirror_planes.hpp).
 //
 // Stages of one cycle (the solver, or step() for pure-SPH runs, calls them in order):
 //   compute_accelerations()  forces at x(n) with sigma(n)       -> a(n)

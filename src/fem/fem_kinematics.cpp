@@ -205,13 +205,16 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       pts_spin[p] = Spin{w_xy[l], w_yz[l], w_zx[l]};
       pts_viscosity[p] = q_mean[l];
       pts_length[p] = le[l];
+      // This lane's nodes at t_(n+1), for the subzonal pressures and the edge viscosity.
+      double xl[D][N];
+      if (subzones || edges)
+        for (int i = 0; i < D; ++i)
+          for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l];
       if (subzones) {
         // The subzones' pressure differences at t_(n+1); their forces' work over this step, the
         // old and the new dp_s each over half of dV_s (as q's), goes into the element. The r-z
         // area form measures the subzones by their areas and books the work on the ring 2 pi r_bar.
-        double xl[D][N], v_new[N];
-        for (int i = 0; i < D; ++i)
-          for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l];
+        double v_new[N];
         subzone_volumes<D>(xl, ring_volumes, v_new);
         double total = 0.0;
         for (int a = 0; a < N; ++a) total += v_new[a];
@@ -230,9 +233,9 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         // The edge forces at t_(n+1) from x(n+1), v(n+1/2); the work of the old and the new
         // forces over this step, each for its half (the trapezoid of q's work above), heats the
         // element before its material update.
-        double xl[D][N], vl[D][N];
+        double vl[D][N];
         for (int i = 0; i < D; ++i)
-          for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l], vl[i][a] = ve[i][a][l];
+          for (int a = 0; a < N; ++a) vl[i][a] = ve[i][a][l];
         double* force = &edge_force[e * edge_values];
         // The heat is the work the forces take from the nodes: in the r-z area form each node
         // feels its planar share times its ring factor (element_forces.cpp), so its velocity

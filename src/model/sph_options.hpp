@@ -44,6 +44,15 @@ struct SphOptions {
   // values -sigma_tt / (rho r) and v_r / r; the density then follows that hoop rate instead of
   // eta / (2 pi r) (docs/theory/sph.md, "The hoop term smoothed as the ring sum is"). Off by default.
   bool smoothed_hoop = false;
+  // r-z, with smoothed_hoop: the band next to the axis, in smoothing lengths, in which the point
+  // hoop term hands over to the smoothed one. Each particle has the share beta = min(1, r / (width
+  // h)); a pair's smoothed terms carry min(beta_i, beta_j), and the part 1 - S_beta / S of the
+  // particle's smoothed weight sum S that the shares took away goes to the point term
+  // -sigma_tt / (rho r) and the point rate v_r / r, with the same weight in both (conjugate). The
+  // ring sums hold no self term, so without the band a particle's own hoop compression never
+  // reaches its own force and nothing holds it off the axis (tests/sph/test_smoothed_hoop_band.cpp).
+  // 0: no band.
+  double smoothed_hoop_width = 0.0;
   double viscosity_alpha_min = 0.1;
   double viscosity_switch_decay = 0.2;
   // Artificial stress against the tensile instability (Gray, Monaghan & Swift

@@ -148,6 +148,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
     hoop_sigma_.resize(coupling_begin);
     for (std::size_t k = 0; k < n; ++k) hoop_sigma_[k] = p_.stress[k].zz;
     for (std::size_t g = 0; g < ghosts_.size(); ++g) hoop_sigma_[n + g] = hoop_sigma_[ghosts_[g].source];
+    fill_hoop_shares();
   }
   const auto& volume = factors_.volume;
   pair_dissipation_.resize(active_.upper_index()[n]);
@@ -177,7 +178,8 @@ void SphSystem<D>::force_pass(bool write_rates) {
         return;
       }
       Vec<D> acc{};
-      double mu_max = 0.0, hoop_weight = 0.0, viscous_hoop = 0.0, hoop_stress = 0.0, image_hoop_stress = 0.0;
+      double mu_max = 0.0, hoop_weight = 0.0, viscous_hoop = 0.0, hoop_stress = 0.0, image_hoop_stress = 0.0,
+             hoop_norm = 0.0, hoop_full = 0.0;
       int count = 0;
       const std::size_t base = active_.upper_index()[i];
       const auto list = active_upper_neighbours(i);
@@ -222,14 +224,22 @@ void SphSystem<D>::force_pass(bool write_rates) {
           subtract_tensile_pair<D>(true, r_sum.data(), grad_a, fn, viscous.dissipation);
         }
         if (smoothed_hoop && j < coupling_begin) {
-          // The hoop term with the ring sum's weights V_j (r_j - r_i) dW/dr_i (symmetric in i, j).
-          const double weight = (x[j][0] - x[i][0]) * grad_a[0];
+          // The hoop term with the ring sum's weights V_j (r_j - r_i) dW/dr_i min(beta_i, beta_j)
+          // (symmetric in i, j).
+          const double full = (x[j][0] - x[i][0]) * grad_a[0];
+          const double share = std::min(hoop_share_[i], hoop_share_[j]);
+          const double weight = full * share;
           const double term = volume[j] * weight * hoop_sigma_[j];
           hoop_stress += term;
-          if (j < n)
+          hoop_norm += volume[j] * weight;
+          hoop_full += volume[j] * full;
+          if (j < n) {
             own[j].hoop_stress += volume[i] * weight * hoop_sigma_[i];
-          else if (ring_sign(j) < 0.0)
+            own[j].hoop_norm += volume[i] * weight;
+            own[j].hoop_full += volume[i] * full;
+          } else if (ring_sign(j) < 0.0) {
             image_hoop_stress += term;
+          }
         }
         Vec<D>& dissipation = pair_dissipation_[base + e];
         for (int a = 0; a < D; ++a) dissipation[a] = viscous.dissipation[a];
@@ -256,6 +266,8 @@ void SphSystem<D>::force_pass(bool write_rates) {
       mine.viscous_hoop += viscous_hoop;
       mine.hoop_stress += hoop_stress;
       mine.image_hoop_stress += image_hoop_stress;
+      mine.hoop_norm += hoop_norm;
+      mine.hoop_full += hoop_full;
     });
     auto add = [](ForceSum& total, const ForceSum& part) {
       total.acceleration += part.acceleration;
@@ -265,6 +277,8 @@ void SphSystem<D>::force_pass(bool write_rates) {
       total.viscous_hoop += part.viscous_hoop;
       total.hoop_stress += part.hoop_stress;
       total.image_hoop_stress += part.image_hoop_stress;
+      total.hoop_norm += part.hoop_norm;
+      total.hoop_full += part.hoop_full;
     };
     // The totals: the accelerations (write_rates), and in r-z the hoop terms of the artificial
     // viscosity and stress, which the kick books also after a restart (force_pass(false)).
@@ -293,6 +307,11 @@ void SphSystem<D>::force_pass(bool write_rates) {
         if (!write_rates) return;
         if (smoothed_hoop) {
           total.acceleration[0] += hoop_scale * total.hoop_stress;
+          // The point term -sigma_tt / (rho r) takes the part of the weight the shares beta took
+          // from the smoothed sum.
+          const double r = x[i][0];
+          const double point = hoop_point_share(total.hoop_norm, total.hoop_full);
+          if (r > 0.0 && point > 0.0) total.acceleration[0] -= point * p_.stress[i].zz / (p_.density[i] * r);
         } else if (axisymmetric && x[i][0] > 0.0) {  // hoop stress: -sigma_tt / (rho r) e_r
           total.acceleration[0] -= p_.stress[i].zz / (p_.density[i] * x[i][0]);
         }

@@ -93,6 +93,16 @@ void SphSystem<D>::compute_correction() {
 }
 
 template <int D>
+void SphSystem<D>::fill_hoop_shares() {
+  const std::size_t n = p_.real;
+  hoop_share_.resize(n + ghosts_.size());
+  const double width = options_.smoothed_hoop_width;
+  for (std::size_t i = 0; i < n; ++i)
+    hoop_share_[i] = width > 0.0 ? std::min(1.0, std::abs(p_.position[i][0]) / (width * p_.smoothing_length[i])) : 1.0;
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) hoop_share_[n + g] = hoop_share_[ghosts_[g].source];
+}
+
+template <int D>
 void SphSystem<D>::update_state(double dt, double time) {
   const std::size_t n = p_.real;
   prepare_neighbours();
@@ -101,6 +111,7 @@ void SphSystem<D>::update_state(double dt, double time) {
   const bool corrected = options_.kernel_correction;
   const bool smoothed_hoop = mode_ == GeometryMode::axisymmetric && options_.smoothed_hoop;
   if (corrected) compute_correction();
+  if (smoothed_hoop) fill_hoop_shares();  // at the mid-step positions
   refresh_active_pairs();
   size_point_factors();
   // Pair-symmetric like force_pass(): v_ji (x) grad_j W_ji = v_ij (x) grad_i W_ij, so each
@@ -126,6 +137,8 @@ void SphSystem<D>::update_state(double dt, double time) {
     auto add = [](KinematicSum& total, const KinematicSum& part) {
       total.rate += part.rate;
       total.hoop += part.hoop;
+      total.hoop_norm += part.hoop_norm;
+      total.hoop_full += part.hoop_full;
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) total.L[a][b] += part.L[a][b];
     };
@@ -197,9 +210,16 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
     const KinematicPair<D, double> k = kinematic_pair<D>(dv_a, pair_grad_a, weight_i, weight_j);
     if (smoothed_hoop && j < coupling_begin) {
       // The smoothed hoop rate's sum, the same weights as the smoothed hoop force (sph_forces.cpp).
-      const double w = (x[j][0] - x[i][0]) * pair_grad_a[0];
+      const double full = (x[j][0] - x[i][0]) * pair_grad_a[0];
+      const double w = full * std::min(hoop_share_[i], hoop_share_[j]);
       mine.hoop += volume[j] * w * v[j][0];
-      if (j < n) own[j].hoop += volume[i] * w * v[i][0];
+      mine.hoop_norm += volume[j] * w;
+      mine.hoop_full += volume[j] * full;
+      if (j < n) {
+        own[j].hoop += volume[i] * w * v[i][0];
+        own[j].hoop_norm += volume[i] * w;
+        own[j].hoop_full += volume[i] * full;
+      }
     }
     const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
     mine.rate += k.rate_i;
@@ -214,6 +234,8 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
   }
   own[i].rate += mine.rate;
   own[i].hoop += mine.hoop;
+  own[i].hoop_norm += mine.hoop_norm;
+  own[i].hoop_full += mine.hoop_full;
   for (int a = 0; a < D; ++a)
     for (int b = 0; b < D; ++b) own[i].L[a][b] += mine.L[a][b];
 }
@@ -229,9 +251,13 @@ bool SphSystem<D>::end_step_of_row(std::size_t i, const KinematicSum& total, dou
   // L = -sum_j weight_j v_ij (x) grad W: the velocity gradient whose work
   // matches the momentum sum (energy-consistent).
   const bool smoothed_hoop = mode_ == GeometryMode::axisymmetric && options_.smoothed_hoop;
-  if (smoothed_hoop)  // the conjugate of the smoothed hoop force: (2 pi rho / eta) sum_j V_j w_ij v_r,j
-    L[2][2] = 2.0 * std::numbers::pi * p_.density[i] / p_.planar_density[i] * total.hoop;
-  else if (mode_ == GeometryMode::axisymmetric)
+  if (smoothed_hoop) {
+    // The conjugate of the smoothed hoop force, (2 pi rho / eta) sum_j V_j w_ij v_r,j, and of its
+    // point part (hoop_point_share) times v_r / r (mid-step x, v).
+    const double scale = 2.0 * std::numbers::pi * p_.density[i] / p_.planar_density[i];
+    const double r = p_.position[i][0];
+    L[2][2] = scale * total.hoop + hoop_point_share(total.hoop_norm, total.hoop_full) * p_.velocity[i][0] / r;
+  } else if (mode_ == GeometryMode::axisymmetric)
     L[2][2] = p_.velocity[i][0] / p_.position[i][0];  // hoop: v_r / r
   SymTensor d{L[0][0],
               L[1][1],
@@ -309,6 +335,8 @@ void SphSystem<D>::update_material_batches(const MaterialContext& ctx) {
 // The class itself is instantiated in sph_system.cpp; these are its members defined here.
 template void SphSystem<2>::compute_correction();
 template void SphSystem<3>::compute_correction();
+template void SphSystem<2>::fill_hoop_shares();
+template void SphSystem<3>::fill_hoop_shares();
 template void SphSystem<2>::update_state(double, double);
 template void SphSystem<3>::update_state(double, double);
 

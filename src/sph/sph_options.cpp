@@ -42,6 +42,9 @@ SphOptions read_sph_options(Parameters& block) {
   o.smoothed_hoop = block.flag("smoothed_hoop", o.smoothed_hoop);
   if (o.smoothed_hoop && !o.volume_form)
     block.fail("smoothed_hoop", "the smoothed hoop term is built on the volume form; it needs volume_form = true");
+  o.smoothed_hoop_width = block.non_negative("smoothed_hoop_width", o.smoothed_hoop_width);
+  if (o.smoothed_hoop_width > 0.0 && !o.smoothed_hoop)
+    block.fail("smoothed_hoop_width", "sets the band of the smoothed hoop term; it needs smoothed_hoop = true");
   o.skin_factor = block.non_negative("skin_factor", o.skin_factor);
   const double sort_interval = block.number("sort_interval", o.sort_interval);
   if (!(sort_interval >= 0.0 && sort_interval <= 1e6) || sort_interval != std::floor(sort_interval))

@@ -237,6 +237,15 @@ class SphSystem {
   void size_point_factors();
   void fill_point_factors();
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
+  // r-z, [sph] smoothed_hoop: each particle's and ghost's share beta of the smoothed hoop sums at
+  // the present positions, min(1, |r| / (smoothed_hoop_width h)), a ghost its source's, into
+  // hoop_share_ (sph_kinematics.cpp).
+  void fill_hoop_shares();
+  // The point term's weight in the hoop force and rate of a particle: the part of its smoothed
+  // weight sum the shares took away, 1 - norm / full (in [0, 1]: every real pair's weight is >= 0).
+  static double hoop_point_share(double norm, double full) {
+    return full > 0.0 ? std::clamp(1.0 - norm / full, 0.0, 1.0) : 1.0;
+  }
 
   GeometryMode mode_;
   SphOptions options_;
@@ -258,6 +267,9 @@ class SphSystem {
   // r-z, [sph] smoothed_hoop: the hoop stress sigma_tt (Pa) of every particle and ghost, a ghost's
   // its source's (force_pass()).
   std::vector<double> hoop_sigma_;
+  // r-z, [sph] smoothed_hoop: beta of every particle and ghost (fill_hoop_shares()); a pair's
+  // smoothed hoop terms carry min(beta_i, beta_j).
+  std::vector<double> hoop_share_;
   NeighbourSearch<D> search_;
   bool correction_current_ = false;
   double skin_ = 0.0;
@@ -303,14 +315,18 @@ class SphSystem {
     // (force_pass(), "The hoop terms of the artificial viscosity and stress").
     double tensile_hoop_weight = 0.0;
     double viscous_hoop = 0.0;
-    // r-z, [sph] smoothed_hoop: sum_j V_j (r_j - r_i) dW/dr_i sigma_tt,j over every neighbour
-    // but coupling points, and the part of it from images across the axis.
+    // r-z, [sph] smoothed_hoop: sum_j V_j (r_j - r_i) dW/dr_i min(beta_i, beta_j) sigma_tt,j over
+    // every neighbour but coupling points, and the part of it from images across the axis.
     double hoop_stress = 0.0, image_hoop_stress = 0.0;
+    double hoop_norm = 0.0;  // the same sum with sigma_tt = 1
+    double hoop_full = 0.0;  // and that without the shares beta
   };
   struct KinematicSum {
     double rate = 0.0;    // sum_j weight_j v_ij . grad W
     double L[D][D] = {};  // -sum_j weight_j v_ij (x) grad W
-    double hoop = 0.0;    // r-z, [sph] smoothed_hoop: sum_j V_j (r_j - r_i) dW/dr_i v_r,j
+    double hoop = 0.0;    // r-z, [sph] smoothed_hoop: sum_j V_j (r_j - r_i) dW/dr_i min(beta_i, beta_j) v_r,j
+    double hoop_norm = 0.0;  // the same sum with v_r = 1
+    double hoop_full = 0.0;  // and that without the shares beta
   };
   BlockSums<ForceSum> force_sums_;
   BlockSums<KinematicSum> kinematic_sums_;

@@ -319,6 +319,35 @@ TEST(SphAxisSmoothedHoop, HydrostaticFieldLeavesNoRadialForceInAnyColumn) {
                 worst_axial, 0.02, false, "-"});
 }
 
+// The band next to the axis ([sph] smoothed_hoop_width): inside it the point term takes the
+// shares' part, whose lattice normalisation differs from the ring sum's, so the hydrostatic
+// imbalance there is the point term's, no larger.
+TEST(SphAxisSmoothedHoop, HydrostaticImbalanceInTheBandIsNoLargerThanThePointTerms) {
+  const double p0 = 1e6, g = 1e6, spacing = 0.02;
+  auto worst_imbalance = [&](const SphOptions& options) {
+    const auto columns = column_accelerations(
+        [&](double, double z) {
+          const double pressure = p0 + g * z;
+          return SymTensor{-pressure, -pressure, -pressure, 0, 0, 0};
+        },
+        spacing, 0.3, 0.7, options);
+    double worst = 0.0;
+    for (const auto& [k, c] : columns)
+      if (k <= 12) worst = std::max(worst, std::abs(c.radial) * (k + 0.5) * spacing / (p0 + g * 0.5));
+    return worst;
+  };
+  SphOptions point, band;
+  band.smoothed_hoop = true;
+  band.smoothed_hoop_width = 1.0;
+  const double worst_point = worst_imbalance(point), worst_band = worst_imbalance(band);
+  std::printf("hydrostatic radial imbalance rho a_r r / p: point %.2e, band %.2e\n", worst_point, worst_band);
+  test::record_check("r-z SPH with the smoothed hoop term and its band of one smoothing length, hydrostatic "
+                     "sigma = -p(z) I: radial force imbalance rho a_r r / p, largest over the columns up to 12 "
+                     "spacings from the axis",
+                     "no larger than the point hoop term's (the lattice's kernel-gradient normalisation)",
+                     fmt::format("{:.2e} (point term {:.2e})", worst_band, worst_point), worst_band <= worst_point);
+}
+
 // The Lame field of a pressurised sphere centred on the axis (SphericalEquilibriumField... above):
 // sigma_rr != sigma_tt, and the smoothed hoop term averages sigma_tt over the kernel as the ring
 // sum averages sigma_rr; their difference is right to the kernel's smoothing of a field curved on

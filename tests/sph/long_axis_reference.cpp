@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include "boundary/mirror_planes.hpp"
@@ -305,6 +306,32 @@ TEST(SphAxisReference, ProfileOfTheFirstTenSpacingsRecorded) {
   }
 }
 
+// Records an r-z ensemble's profile and first three columns against the 3-D ensemble, each as
+// "Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with <variant>: ...".
+void record_against_reference(const Ensemble& rz, const std::string& variant) {
+  const auto& ref = runs().second;
+  EXPECT_LT(rz.worst_energy_error, 0.01);
+  for (int bin = 0; bin < kProfileBins; ++bin) {
+    const double hoop = rz.mean.profile_hoop[bin] / ref.mean.profile_hoop[bin];
+    const double axial = rz.mean.profile_uz[bin] / ref.mean.profile_uz[bin];
+    std::printf("%s, r %d-%d dx: u_r / r0 r-z / 3-D %.3f; u_z %.3f\n", variant.c_str(), bin, bin + 1, hoop, axial);
+    test::record_observation(
+        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with {}: soil {}-{} spacings from the axis, mean of 5 "
+                    "runs: r-z / 3-D of the hoop strain u_r / r0; of u_z",
+                    variant, bin, bin + 1),
+        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
+        fmt::format("{:.3f}; {:.3f}", hoop, axial), std::abs(hoop - 1.0) < 0.05 && std::abs(axial - 1.0) < 0.05);
+  }
+  for (int c = 0; c < 3; ++c)
+    test::record_observation(
+        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with {}: column {}, mean of 5 runs: r-z / 3-D of u_r; "
+                    "of u_z",
+                    variant, c + 1),
+        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
+        fmt::format("{:.3f}; {:.3f}", rz.mean.ur[c] / ref.mean.ur[c], rz.mean.uz[c] / ref.mean.uz[c]),
+        std::abs(rz.mean.ur[c] / ref.mean.ur[c] - 1.0) < 0.05 && std::abs(rz.mean.uz[c] / ref.mean.uz[c] - 1.0) < 0.05);
+}
+
 // The r-z model with the smoothed hoop term and its conjugate hoop rate ([sph] smoothed_hoop,
 // docs/theory/sph.md, "The hoop term smoothed as the ring sum is"), recorded against the same 3-D
 // ensemble. At 6 Dec 2026 (ensemble means, 1 ms): hoop strain r-z / 3-D 0.87 0.98 1.14 1.01 0.99
@@ -313,28 +340,7 @@ TEST(SphAxisReference, ProfileOfTheFirstTenSpacingsRecorded) {
 // 1.11, u_z 1.10 1.09 1.00. Recorded, not asserted: the option is off by default (the axial lead of
 // the first two columns, and the coarse buried case stops when a charge particle crosses the axis).
 TEST(SphAxisReference, SmoothedHoopProfileRecorded) {
-  const auto& ref = runs().second;
-  const Ensemble& rz = smoothed_runs();
-  EXPECT_LT(rz.worst_energy_error, 0.01);
-  for (int bin = 0; bin < kProfileBins; ++bin) {
-    const double hoop = rz.mean.profile_hoop[bin] / ref.mean.profile_hoop[bin];
-    const double axial = rz.mean.profile_uz[bin] / ref.mean.profile_uz[bin];
-    std::printf("smoothed hoop, r %d-%d dx: u_r / r0 r-z / 3-D %.3f; u_z %.3f\n", bin, bin + 1, hoop, axial);
-    test::record_observation(
-        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with the smoothed hoop term: soil {}-{} spacings "
-                    "from the axis, mean of 5 runs: r-z / 3-D of the hoop strain u_r / r0; of u_z",
-                    bin, bin + 1),
-        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
-        fmt::format("{:.3f}; {:.3f}", hoop, axial), std::abs(hoop - 1.0) < 0.05 && std::abs(axial - 1.0) < 0.05);
-  }
-  for (int c = 0; c < 3; ++c)
-    test::record_observation(
-        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with the smoothed hoop term: column {}, mean of 5 "
-                    "runs: r-z / 3-D of u_r; of u_z",
-                    c + 1),
-        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
-        fmt::format("{:.3f}; {:.3f}", rz.mean.ur[c] / ref.mean.ur[c], rz.mean.uz[c] / ref.mean.uz[c]),
-        std::abs(rz.mean.ur[c] / ref.mean.ur[c] - 1.0) < 0.05 && std::abs(rz.mean.uz[c] / ref.mean.uz[c] - 1.0) < 0.05);
+  record_against_reference(smoothed_runs(), "the smoothed hoop term");
 }
 
 // The r-z model with the smoothed hoop term, its band of h/2 next to the axis and the viscosity's
@@ -344,28 +350,5 @@ TEST(SphAxisReference, SmoothedHoopProfileRecorded) {
 // 2.08 1.18 1.13, u_z 1.05 1.01 0.98. The axial motion agrees out to ten spacings; the first
 // column is thrown sideways twice as far as in 3-D (its u_r is 4 mm there).
 TEST(SphAxisReference, SmoothedHoopBandProfileRecorded) {
-  const auto& ref = runs().second;
-  const Ensemble& rz = band_runs();
-  EXPECT_LT(rz.worst_energy_error, 0.01);
-  for (int bin = 0; bin < kProfileBins; ++bin) {
-    const double hoop = rz.mean.profile_hoop[bin] / ref.mean.profile_hoop[bin];
-    const double axial = rz.mean.profile_uz[bin] / ref.mean.profile_uz[bin];
-    std::printf("smoothed hoop with its band, r %d-%d dx: u_r / r0 r-z / 3-D %.3f; u_z %.3f\n", bin, bin + 1, hoop,
-                axial);
-    test::record_observation(
-        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with the smoothed hoop term, its band of h/2 and "
-                    "the viscosity's hoop term: soil {}-{} spacings from the axis, mean of 5 runs: r-z / 3-D of the "
-                    "hoop strain u_r / r0; of u_z",
-                    bin, bin + 1),
-        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
-        fmt::format("{:.3f}; {:.3f}", hoop, axial), std::abs(hoop - 1.0) < 0.05 && std::abs(axial - 1.0) < 0.05);
-  }
-  for (int c = 0; c < 3; ++c)
-    test::record_observation(
-        fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m, 1 ms, r-z with the smoothed hoop term, its band of h/2 and "
-                    "the viscosity's hoop term: column {}, mean of 5 runs: r-z / 3-D of u_r; of u_z",
-                    c + 1),
-        "1 within 5 % (the same problem in 3-D, quarter model, no axis)",
-        fmt::format("{:.3f}; {:.3f}", rz.mean.ur[c] / ref.mean.ur[c], rz.mean.uz[c] / ref.mean.uz[c]),
-        std::abs(rz.mean.ur[c] / ref.mean.ur[c] - 1.0) < 0.05 && std::abs(rz.mean.uz[c] / ref.mean.uz[c] - 1.0) < 0.05);
+  record_against_reference(band_runs(), "the smoothed hoop term, its band of h/2 and the viscosity's hoop term");
 }

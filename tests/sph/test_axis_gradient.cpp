@@ -73,13 +73,14 @@ auto lame_field(double p, double a, double zc) {
 
 // Hydrostatic sigma = -p(z) I, p = p0 + g z: div sigma = -g e_z, no hoop
 // imbalance; a = -g / rho e_z everywhere.
-std::map<int, ColumnAcceleration> hydrostatic_column(double p0, double g, double spacing) {
+std::map<int, ColumnAcceleration> hydrostatic_column(double p0, double g, double spacing,
+                                                     const SphOptions& options = {}) {
   return column_accelerations(
       [&](double, double z) {
         const double pressure = p0 + g * z;
         return SymTensor{-pressure, -pressure, -pressure, 0, 0, 0};
       },
-      spacing);
+      spacing, 0.3, 0.7, options);
 }
 
 }  // namespace
@@ -296,12 +297,7 @@ TEST(SphAxisSmoothedHoop, HydrostaticFieldLeavesNoRadialForceInAnyColumn) {
   SphOptions smoothed;
   smoothed.smoothed_hoop = true;
   const double p0 = 1e6, g = 1e6, spacing = 0.02;
-  const auto columns = column_accelerations(
-      [&](double, double z) {
-        const double pressure = p0 + g * z;
-        return SymTensor{-pressure, -pressure, -pressure, 0, 0, 0};
-      },
-      spacing, 0.3, 0.7, smoothed);
+  const auto columns = hydrostatic_column(p0, g, spacing, smoothed);
   double worst_axial = 0.0, worst_radial = 0.0;
   for (const auto& [k, c] : columns) {
     if (k > 12) continue;  // the free outer surface (r = 0.3 m) and its neighbour
@@ -325,12 +321,7 @@ TEST(SphAxisSmoothedHoop, HydrostaticFieldLeavesNoRadialForceInAnyColumn) {
 TEST(SphAxisSmoothedHoop, HydrostaticImbalanceInTheBandIsNoLargerThanThePointTerms) {
   const double p0 = 1e6, g = 1e6, spacing = 0.02;
   auto worst_imbalance = [&](const SphOptions& options) {
-    const auto columns = column_accelerations(
-        [&](double, double z) {
-          const double pressure = p0 + g * z;
-          return SymTensor{-pressure, -pressure, -pressure, 0, 0, 0};
-        },
-        spacing, 0.3, 0.7, options);
+    const auto columns = hydrostatic_column(p0, g, spacing, options);
     double worst = 0.0;
     for (const auto& [k, c] : columns)
       if (k <= 12) worst = std::max(worst, std::abs(c.radial) * (k + 0.5) * spacing / (p0 + g * 0.5));

@@ -81,6 +81,9 @@ void SphSystem<D>::visit_state(StateVisitor& v) {
       throw std::runtime_error("checkpoint: ghost arrays of different lengths");
     ghosts_.resize(ghost_source.size());
     for (std::size_t g = 0; g < ghosts_.size(); ++g) ghosts_[g] = {ghost_source[g], ghost_plane[g]};
+    // The coupling points follow the restored ghosts, not the ghosts of the set-up this run
+    // made before loading: until the next list rebuild they are written and read from here.
+    external_begin_ = p.real + ghosts_.size();
   }
   int correction_current = correction_current_ ? 1 : 0;
   visit(v, "correction_current", correction_current);

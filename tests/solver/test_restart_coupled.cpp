@@ -152,6 +152,30 @@ Model contact_model(std::int64_t max_cycles) {
   return model;
 }
 
+// An r-z block of gas (1000 kg/m^3, 1e5 Pa, sound speed 11.8 m/s) thrown at the axis from
+// r = 20 mm at 40 m/s, with the smoothed hoop terms and their band ([sph] smoothed_hoop,
+// smoothed_hoop_width, viscosity_hoop): it reaches the axis within the first half of the run, so
+// the axis images are rebuilt and their number grows from none before the half-way restart. A
+// restart must place the ghosts and what follows them (the smoothed hoop stresses, the coupling
+// points) by the restored ghost count, not by the count at start-up.
+Model axis_band_model(std::int64_t max_cycles) {
+  Model model;
+  model.run.mode = GeometryMode::axisymmetric;
+  model.run.cfl = 0.5;
+  model.sph.smoothed_hoop = true;
+  model.sph.smoothed_hoop_width = 0.5;
+  model.sph.viscosity_hoop = true;
+  test::add_sph_part(model, "gas", test::ideal_gas("gas", 1000.0, 1.4, 1e5),
+                     test::box_fill({0.02, 0.0, 0.0}, {0.06, 0.04, 0.0}, 0.002), {-40.0, 0.0, 0.0});
+  model.gauges.push_back(gauges("gas", {{0.021, 0.02, 0.0}, {0.03, 0.02, 0.0}, {0.05, 0.02, 0.0}}));
+  run_settings(model, 1.5e-3, max_cycles);
+  return model;
+}
+
+std::uint64_t ghost_count(const fs::path& checkpoint) {
+  return test::checkpoint_array(checkpoint, "solver.sph.ghost_source").count;
+}
+
 std::uint64_t eroded_count(const fs::path& checkpoint) {
   const StateArray a = test::checkpoint_array(checkpoint, "solver.eroded_count");
   std::uint64_t n = 0;
@@ -192,6 +216,20 @@ TEST(RestartCoupled, JoinElementErodedBeforeTheRestartBitIdentical) {
 TEST(RestartCoupled, SlidingContactBitIdentical) {
   const auto cycles = test::expect_split_run_bit_identical(scratch("contact"), contact_model, "impact.csv");
   EXPECT_GT(cycles, 40);
+}
+
+TEST(RestartCoupled, AxisImagesRebuiltBeforeTheRestartBitIdentical) {
+  const fs::path root = scratch("axis-band");
+  const auto cycles = test::expect_split_run_bit_identical(root, axis_band_model, "gas.csv");
+  EXPECT_GT(cycles, 100);
+  // The ghost count at the restart differs from that of the first cycle (the start-up's).
+  const RunSummary one = run_model(axis_band_model(1), test::quiet_run_options(root / "one"));
+  ASSERT_EQ(one.cycles, 1);
+  const auto at_start = list_checkpoints(root / "one" / "checkpoints");
+  const auto split = list_checkpoints(root / "split" / "checkpoints");
+  ASSERT_EQ(at_start.size(), 1u);
+  ASSERT_EQ(split.size(), 2u);
+  EXPECT_GT(ghost_count(split[1]), ghost_count(at_start[0]) + 10) << "the axis images must grow before the restart";
 }
 
 }  // namespace

@@ -99,15 +99,43 @@ def collect(outdir, camouflet):
     return rows
 
 
+def richardson(values, ratio):
+    """(order p, Richardson estimate, None) of f_coarse, f_medium, f_fine on meshes each finer by
+    `ratio`, or (nan, nan, reason) where three values do not allow one: the differences
+    e1 = f_medium - f_coarse and e2 = f_fine - f_medium must have the same sign and shrink
+    (monotone convergence); then p = ln(e1 / e2) / ln(ratio) and f = f_fine + e2 / (ratio^p - 1)."""
+    try:
+        f1, f2, f3 = (float(v) for v in values)
+    except (TypeError, ValueError):
+        return nan, nan, "—"
+    if not all(math.isfinite(f) for f in (f1, f2, f3)):
+        return nan, nan, "—"
+    e1, e2 = f2 - f1, f3 - f2
+    if e2 == 0.0:
+        return nan, nan, "unchanged" if e1 == 0.0 else "fine = medium"
+    if e1 * e2 < 0.0:
+        return nan, nan, "oscillates"
+    if abs(e2) >= abs(e1):
+        return nan, nan, "diverges"
+    p = math.log(e1 / e2) / math.log(ratio)
+    return p, f3 + e2 / (ratio ** p - 1.0), None
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("outdirs", nargs="+", metavar="OUTDIR")
     ap.add_argument("--label", action="append", default=[], help="column heading, one per OUTDIR, in order")
     ap.add_argument("--csv", help="also write the numbers as CSV to this file")
     ap.add_argument("--camouflet", default="", help="camouflet executable (for `empirical --csv`)")
+    ap.add_argument("--refinement", type=float, default=0.0,
+                    help="three runs, coarse to fine, each finer by this ratio: add the observed order of "
+                         "convergence and the Richardson estimate of each quantity")
     args = ap.parse_args()
     if args.label and len(args.label) != len(args.outdirs):
         sys.exit(f"error: {len(args.label)} --label for {len(args.outdirs)} output folders")
+    if args.refinement and (len(args.outdirs) != 3 or not args.refinement > 1.0):
+        sys.exit(f"error: --refinement needs three output folders (coarse to fine) and a ratio above 1, "
+                 f"got {len(args.outdirs)} folders and {args.refinement:g}")
     labels = args.label or [os.path.basename(os.path.normpath(d)) for d in args.outdirs]
     runs = [collect(d, args.camouflet) for d in args.outdirs]
     order = []
@@ -124,20 +152,30 @@ def main():
         key = q.split(" peak radial")[0] if " peak radial" in q else q
         if key not in [k for k, _ in names]:
             names.append((key, q))
-    print("| quantity | " + " | ".join(labels) + " |")
-    print("|---|" + "---|" * len(labels))
+    extra = ["observed order", "Richardson estimate"] if args.refinement else []
+    print("| quantity | " + " | ".join(labels + extra) + " |")
+    print("|---|" + "---|" * (len(labels) + len(extra)))
+    orders = {}
     for key, q in names:
         cells = []
         for k in keyed:
             v, shown = k.get(key, (nan, None))
             cells.append(shown if shown is not None else fmt(v))
+        if args.refinement:
+            orders[key] = richardson([k.get(key, (nan, None))[0] for k in keyed], args.refinement)
+            p, estimate, why = orders[key]
+            cells += [fmt(p, 2) if why is None else why, fmt(estimate) if why is None else "—"]
         print(f"| {q} | " + " | ".join(cells) + " |")
     if args.csv:
         with open(args.csv, "w", newline="") as f:
             w = csv.writer(f, lineterminator="\n")
-            w.writerow(["quantity"] + labels)
+            w.writerow(["quantity"] + labels + extra)
             for key, q in names:
-                w.writerow([q] + [k.get(key, (nan, None))[0] for k in keyed])
+                row = [q] + [k.get(key, (nan, None))[0] for k in keyed]
+                if args.refinement:
+                    p, estimate, why = orders[key]
+                    row += [p if why is None else why, estimate if why is None else ""]
+                w.writerow(row)
 
 
 if __name__ == "__main__":

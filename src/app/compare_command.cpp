@@ -23,6 +23,7 @@ void add_compare_command(CLI::App& app, CommandResult& result) {
   struct Options {
     std::vector<std::string> outdirs, labels;
     std::string csv;
+    double refinement = 0.0;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("compare", "Headline results of several runs side by side (Markdown table)");
@@ -31,6 +32,9 @@ void add_compare_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("--label", o->labels, "Column heading of each OUTDIR, in order (default: the folder names)")
       ->allow_extra_args(false);
   cmd->add_option("--csv", o->csv, "Also write the numbers as CSV to this file");
+  cmd->add_option("--refinement", o->refinement,
+                  "Three runs, coarse to fine, each finer by this ratio: add each quantity's observed order of "
+                  "convergence and Richardson estimate");
   cmd->callback([o, &result] {
     for (const std::string& d : o->outdirs)
       if (!fs::exists(fs::path(d) / "summary.json")) {
@@ -55,6 +59,17 @@ void add_compare_command(CLI::App& app, CommandResult& result) {
     std::vector<std::string> args = o->outdirs;
     for (const std::string& l : o->labels) args.insert(args.end(), {"--label", l});
     if (!o->csv.empty()) args.insert(args.end(), {"--csv", o->csv});
+    if (o->refinement != 0.0) {
+      if (o->outdirs.size() != 3 || !(o->refinement > 1.0)) {
+        std::cerr << fmt::format(
+            "error: --refinement: needs three output folders (coarse to fine) and a ratio above 1, got {} folders "
+            "and {}\n",
+            o->outdirs.size(), o->refinement);
+        result.exit_code = exit_bad_input;
+        return;
+      }
+      args.insert(args.end(), {"--refinement", fmt::format("{}", o->refinement)});
+    }
     args.insert(args.end(), {"--camouflet", self.string()});
     result.exit_code = run_python_script(script, args);
   });

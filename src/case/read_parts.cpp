@@ -198,9 +198,11 @@ int part_named(const Model& model, const std::string& name, PartKind kind, const
                               : fmt::format("no part '{}' is defined; did you mean '{}'?", name, guess));
 }
 
-// `hourglass = { form = ..., coefficient = ... }` of a FEM part: its own
-// hourglass control in place of [run.hourglass] (docs/case-format.md).
-HourglassControl read_part_hourglass(TomlReader& h) {
+// `hourglass = { form = ..., coefficient = ..., subzonal = ... }` of a FEM part: its own
+// hourglass control in place of [run.hourglass], and its own subzonal pressures (absent: the
+// run's) (docs/case-format.md).
+HourglassControl read_part_hourglass(TomlReader& h, Part& part) {
+  if (h.has("subzonal")) part.subzonal = h.non_negative("subzonal", 0.0);
   HourglassControl control;
   const std::string form = h.choice("form", {"viscous", "stiffness"}, "");
   control.form = form == "stiffness" ? HourglassForm::stiffness : HourglassForm::viscous;
@@ -284,9 +286,17 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
     part.initial_velocity = p.vector("initial_velocity", dim, {0, 0, 0});
     if (auto geo = p.table("geostatic")) part.geostatic = read_part_geostatic(*geo, model, part);
     if (part.kind == PartKind::fem) {
-      if (auto h = p.table("hourglass")) part.hourglass = read_part_hourglass(*h);
-    } else if (p.has("hourglass")) {
-      p.fail("hourglass", "only a FEM part has hourglass control (SPH particles have no hourglass modes)");
+      if (auto h = p.table("hourglass")) part.hourglass = read_part_hourglass(*h, part);
+      if (auto v = p.table("viscosity")) {
+        part.viscosity_form = read_viscosity_form(*v, model.run.viscosity_form);
+        v->finish();
+      }
+    } else {
+      if (p.has("hourglass"))
+        p.fail("hourglass", "only a FEM part has hourglass control (SPH particles have no hourglass modes)");
+      if (p.has("viscosity"))
+        p.fail("viscosity", "only a FEM part takes a FEM viscosity form (the particles' is [sph] viscosity_alpha, "
+                            "viscosity_beta)");
     }
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);

@@ -5,6 +5,12 @@
 
 namespace camouflet::case_detail {
 
+ViscosityForm read_viscosity_form(TomlReader& v, ViscosityForm fallback) {
+  if (!v.has("form")) return fallback;
+  const std::string form = v.choice("form", {"acceleration", "volumetric", "edge"}, "acceleration");
+  return form == "edge" ? ViscosityForm::edge : form == "volumetric" ? ViscosityForm::volumetric : ViscosityForm::acceleration;
+}
+
 void read_run(TomlReader& r, Model& model) {
   RunControl& run = model.run;
   run.where = r.where();
@@ -68,10 +74,7 @@ void read_run(TomlReader& r, Model& model) {
   if (auto v = r.table("viscosity")) {
     run.viscosity_linear = v->non_negative("linear", run.viscosity_linear);
     run.viscosity_quadratic = v->non_negative("quadratic", run.viscosity_quadratic);
-    const std::string form = v->choice("form", {"acceleration", "volumetric", "edge"}, "acceleration");
-    run.viscosity_form = form == "edge"         ? ViscosityForm::edge
-                         : form == "volumetric" ? ViscosityForm::volumetric
-                                                : ViscosityForm::acceleration;
+    run.viscosity_form = read_viscosity_form(*v, run.viscosity_form);
     v->finish();
   }
   if (auto h = r.table("hourglass")) {

@@ -10,6 +10,8 @@
 namespace camouflet::case_detail {
 
 void read_run(TomlReader& run, Model& model);
+// `form` of [run.viscosity] or of a FEM part's `viscosity` table (case/read_run.cpp).
+ViscosityForm read_viscosity_form(TomlReader& viscosity, ViscosityForm fallback);
 void read_output(TomlReader& output, Model& model);
 void read_materials(TomlReader& materials, Model& model);
 void read_parts(TomlReader& root, Model& model, const std::filesystem::path& case_dir);

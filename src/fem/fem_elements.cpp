@@ -65,17 +65,21 @@ double FemElements<D>::volume_of(const double* x, std::size_t e) const {
 }
 
 template <int D>
-void FemElements<D>::set_subzonal_pressure(double kappa, const double* x) {
-  subzonal_coefficient = kappa;
-  if (!(kappa > 0.0)) {
+void FemElements<D>::set_subzonal_pressure(const std::vector<double>& kappa, const double* x) {
+  const std::size_t n = size();
+  if (kappa.size() != n)
+    throw std::logic_error(fmt::format("set_subzonal_pressure: {} coefficients for {} elements", kappa.size(), n));
+  if (std::none_of(kappa.begin(), kappa.end(), [](double k) { return k > 0.0; })) {
+    subzonal_coefficient.clear();
     subzone_fraction.clear(), subzone_pressure.clear(), subzone_volume.clear();
     return;
   }
-  const std::size_t n = size();
+  subzonal_coefficient = kappa;
   subzone_fraction.assign(n * nodes, 0.0);
   subzone_pressure.assign(n * nodes, 0.0);
   subzone_volume.assign(n * nodes, 0.0);
   for (std::size_t e = 0; e < n; ++e) {
+    if (!(kappa[e] > 0.0)) continue;
     NodeValues<D> xe;
     gather<D>(x, &connectivity[e * nodes], xe);
     double v[nodes];
@@ -92,6 +96,16 @@ void FemElements<D>::set_subzonal_pressure(double kappa, const double* x) {
       subzone_volume[e * nodes + static_cast<std::size_t>(s)] = v[s];
     }
   }
+}
+
+template <int D>
+void FemElements<D>::set_viscosity_forms(std::vector<ViscosityForm> per_element) {
+  if (per_element.size() != size())
+    throw std::logic_error(
+        fmt::format("set_viscosity_forms: {} forms for {} elements", per_element.size(), size()));
+  viscosity_form = std::move(per_element);
+  edge_form_anywhere =
+      std::find(viscosity_form.begin(), viscosity_form.end(), ViscosityForm::edge) != viscosity_form.end();
 }
 
 template <int D>

@@ -135,14 +135,20 @@ class FemElements {
   // N, e * edges * D: the edge viscosity's force on each edge's first node (its second takes the
   // opposite) from the latest kinematics; empty unless [run.viscosity] form = "edge".
   std::vector<double> edge_force;
-  // Subzonal pressures (subzonal_pressure.hpp), e * nodes each; empty unless
-  // [run.hourglass] subzonal > 0: each corner subzone's share of the element's mass, its
-  // pressure difference dp_s (Pa) and volume V_s (m^3) at the latest kinematics.
+  // Subzonal pressures (subzonal_pressure.hpp), e * nodes each; empty unless some element's
+  // part has subzonal > 0 ([run.hourglass] or its own): each corner subzone's share of the
+  // element's mass, its pressure difference dp_s (Pa) and volume V_s (m^3) at the latest
+  // kinematics (dp_s stays 0 in an element of coefficient 0).
   std::vector<double> subzone_fraction, subzone_pressure, subzone_volume;
-  double subzonal_coefficient = 0.0;  // kappa in dp_s = kappa c^2 (rho_s - rho_z)
-  // Subzonal pressures with coefficient kappa from the positions x at set-up (each subzone keeps
-  // the mass of its initial volume).
-  void set_subzonal_pressure(double kappa, const double* x);
+  std::vector<double> subzonal_coefficient;  // per element: kappa in dp_s = kappa c^2 (rho_s - rho_z)
+  // Subzonal pressures with coefficient kappa[e] from the positions x at set-up (each subzone
+  // keeps the mass of its initial volume).
+  void set_subzonal_pressure(const std::vector<double>& kappa, const double* x);
+  // Each element's viscosity form where the parts differ (set_viscosity_forms); empty: the
+  // form of the ViscosityControl passed to kinematics() for all.
+  std::vector<ViscosityForm> viscosity_form;
+  bool edge_form_anywhere = false;  // some element of viscosity_form has the edge form
+  void set_viscosity_forms(std::vector<ViscosityForm> per_element);
   std::vector<double> density;                 // kg/m^3
   std::vector<double> wave_speed;              // m/s, sqrt(c^2 + 4G/3rho) of the latest update
   std::vector<double> stable_wave_speed;       // m/s, the same with the stable sound speed (the dt vote's)

@@ -57,7 +57,9 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
   std::int64_t tangled = std::numeric_limits<std::int64_t>::max();
   double viscous_work = 0.0;
-  const bool edges = visc.form == ViscosityForm::edge;
+  // Each element's viscosity form: its part's where the parts differ, else the run's.
+  const bool own_forms = !viscosity_form.empty();
+  const bool edges = own_forms ? edge_form_anywhere : visc.form == ViscosityForm::edge;
   const bool subzones = !subzone_pressure.empty();
   // r-z area form: planar subzone areas and median lengths, the nodes' ring factors apply them
   // (element_forces.cpp).
@@ -130,8 +132,15 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
     // coasting inwards) compresses across the flow, not along a, and takes
     // no q, where tr D would heat it (docs/theory-fem.md, "Artificial
     // viscosity"). The in-plane part only in r-z: a has no hoop component.
+    ViscosityForm form[W];
+    bool along_acceleration = false, volumetric = false;
+    for (int l = 0; l < W; ++l) {
+      form[l] = own_forms && l < count ? viscosity_form[e0 + static_cast<std::size_t>(l)] : visc.form;
+      along_acceleration = along_acceleration || form[l] == ViscosityForm::acceleration;
+      volumetric = volumetric || form[l] == ViscosityForm::volumetric;
+    }
     Pack div{};  // the edge form: no q
-    if (visc.form == ViscosityForm::acceleration) {
+    if (along_acceleration) {
       Pack abar[D] = {}, a2{};
       for (int i = 0; i < D; ++i) {
         for (int n = 0; n < N; ++n) abar[i] += ve[i][n] - ae[i][n];
@@ -140,9 +149,13 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       Pack ala{};
       for (int i = 0; i < D; ++i)
         for (int j = 0; j < D; ++j) ala += abar[i] * L[i][j] * abar[j];
-      for (int l = 0; l < W; ++l) div[l] = a2[l] > 0.0 ? ala[l] / a2[l] : 0.0;
-    } else if (visc.form == ViscosityForm::volumetric) {
-      div = L[0][0] + L[1][1] + L[2][2];
+      for (int l = 0; l < W; ++l)
+        if (form[l] == ViscosityForm::acceleration) div[l] = a2[l] > 0.0 ? ala[l] / a2[l] : 0.0;
+    }
+    if (volumetric) {
+      const Pack trace = L[0][0] + L[1][1] + L[2][2];
+      for (int l = 0; l < W; ++l)
+        if (form[l] == ViscosityForm::volumetric) div[l] = trace[l];
     }
     const Pack q_all = rho * le *
                        (visc.quadratic * visc.quadratic * le * -div +
@@ -206,11 +219,13 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       pts_viscosity[p] = q_mean[l];
       pts_length[p] = le[l];
       // This lane's nodes at t_(n+1), for the subzonal pressures and the edge viscosity.
+      const bool subzones_l = subzones && subzonal_coefficient[e] > 0.0;
+      const bool edges_l = edges && form[l] == ViscosityForm::edge;
       double xl[D][N];
-      if (subzones || edges)
+      if (subzones_l || edges_l)
         for (int i = 0; i < D; ++i)
           for (int a = 0; a < N; ++a) xl[i][a] = xe[i][a][l];
-      if (subzones) {
+      if (subzones_l) {
         // The subzones' pressure differences at t_(n+1); their forces' work over this step, the
         // old and the new dp_s each over half of dV_s (as q's), goes into the element. The r-z
         // area form measures the subzones by their areas and books the work on the ring 2 pi r_bar.
@@ -218,7 +233,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         subzone_volumes<D>(xl, ring_volumes, v_new);
         double total = 0.0;
         for (int a = 0; a < N; ++a) total += v_new[a];
-        const double stiffness = subzonal_coefficient * wave_speed[e] * wave_speed[e] * rho[l];
+        const double stiffness = subzonal_coefficient[e] * wave_speed[e] * wave_speed[e] * rho[l];
         double work = 0.0;
         for (int a = 0; a < N; ++a) {
           const std::size_t k = e * N + static_cast<std::size_t>(a);
@@ -229,7 +244,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         }
         pts_energy[p] += work * (area_weighted_ ? w[l] : 1.0) / mass[e];
       }
-      if (edges) {
+      if (edges_l) {
         // The edge forces at t_(n+1) from x(n+1), v(n+1/2); the work of the old and the new
         // forces over this step, each for its half (the trapezoid of q's work above), heats the
         // element before its material update.

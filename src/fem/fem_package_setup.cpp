@@ -119,10 +119,22 @@ FemPackage<D>::FemPackage(const Model& model) : model_(&model) {
     hourglass_force.assign(nn * D, 0.0);
     hourglass_force_previous.assign(nn * D, 0.0);
   }
+  // Subzonal pressures and the viscosity form: each element its part's (Model::subzonal_of,
+  // viscosity_form_of); the forms stored per element only where the parts differ.
   viscosity = {model.run.viscosity_quadratic, model.run.viscosity_linear, model.run.viscosity_form};
-  elements.set_subzonal_pressure(model.run.subzonal_pressure, position.data());
-  if (viscosity.form == ViscosityForm::edge)
-    elements.edge_force.assign(ne * ElementEdges<D>::count * D, 0.0);
+  std::vector<double> subzonal(ne);
+  std::vector<ViscosityForm> forms(ne);
+  bool mixed_forms = false;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const auto part = static_cast<std::size_t>(mesh.element_part[e]);
+    subzonal[e] = model.subzonal_of(part);
+    forms[e] = model.viscosity_form_of(part);
+    mixed_forms = mixed_forms || forms[e] != viscosity.form;
+  }
+  elements.set_subzonal_pressure(subzonal, position.data());
+  if (mixed_forms) elements.set_viscosity_forms(std::move(forms));
+  const bool edges = mixed_forms ? elements.edge_form_anywhere : viscosity.form == ViscosityForm::edge;
+  if (edges) elements.edge_force.assign(ne * ElementEdges<D>::count * D, 0.0);
 }
 
 // The geostatic initial state of the FEM soil parts under gravity (docs/theory/gravity.md): each

@@ -88,6 +88,16 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
   auto out = std::back_inserter(b);
   fmt::format_to(out, "title = \"{}\"\n\n[run]\ngeometry = \"{}\"\nend_time = {}  # s\ncfl = {}\n", s.title,
                  geometry, s.run.end_time, s.run.cfl);
+  // r-z with an SPH zone: the axis below the zone. The volume form's hoop force drew the axis
+  // element below the zone into a needle that set the time step (default: 0.13 us by 41 ms,
+  // against 2 us at the start) unless the soil eroded; the area form (the momentum of a radian's
+  // planar area, Wilkins) keeps it whole. Subzonal pressures and the edge viscosity (Caramana,
+  // Shashkov and Whalen 1998) in the soil hold the elements the flow tangles, and with them
+  // default's first SPH column moves with the second (docs/buried-structure.md, "The axis
+  // without soil erosion"). Not without the zone: there the charge and the strongest shock are
+  // FEM, and the edge viscosity without its limiter halves the near-field peaks (the same page).
+  const bool axis_treatment = std::string(geometry) == "axisymmetric" && s.sph_radius > 0.0;
+  if (axis_treatment) b += "axisymmetric_momentum = \"area\"  # the r-z area form (docs/buried-structure.md, \"The axis without soil erosion\")\n";
   if (s.run.gravity > 0.0)
     fmt::format_to(
         out,
@@ -103,11 +113,15 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
   // 65 ms). The stiffness form holds it (docs/buried-structure.md, "Hourglass control").
   // The soil's control is the run's; the box's parts carry their own when it differs
   // (part_hourglass below).
-  fmt::format_to(out, "[run.hourglass]  # {}\nform = \"{}\"\ncoefficient = {}\n\n",
+  fmt::format_to(out, "[run.hourglass]  # {}\nform = \"{}\"\ncoefficient = {}\n",
                  s.soil_hourglass == "stiffness"
                      ? "stiffness form: the soil under the charge flows for tens of ms"
                      : "the soil's (soil.hourglass)",
                  s.soil_hourglass, s.soil_hourglass_kappa());
+  if (axis_treatment)
+    b += "subzonal = 1.0  # the soil's subzonal pressures (the box's parts: none)\n\n"
+         "[run.viscosity]\nform = \"edge\"  # the soil's edge viscosity (the box's parts: the point q)\n";
+  b += "\n";
   fmt::format_to(out, "[output]\nfield_interval = {}  # s\ngauge_interval = {}  # s\n\n", s.run.field_interval,
                  s.run.gauge_interval);
   fmt::format_to(out, "[materials.soil]\npreset = \"{}\"\n", s.soil);
@@ -124,8 +138,12 @@ std::string part_geostatic(const BuriedStructureSpec& s, const std::string& mate
   return "geostatic = { surface = 0.0, k0 = \"jaky\" }\n";
 }
 
-std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material) {
+std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material, bool axis_treatment) {
   if (material != "concrete") return "";
+  if (axis_treatment)
+    return fmt::format("hourglass = {{ form = \"{}\", coefficient = {}, subzonal = 0.0 }}  # structure.hourglass\n"
+                       "viscosity = {{ form = \"acceleration\" }}  # the box: the point q, no subzonal pressures\n",
+                       s.structure_hourglass, s.structure_hourglass_kappa());
   if (s.structure_hourglass == s.soil_hourglass && s.structure_hourglass_kappa() == s.soil_hourglass_kappa())
     return "";
   return fmt::format("hourglass = {{ form = \"{}\", coefficient = {} }}  # structure.hourglass\n",

@@ -46,8 +46,10 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
 
 // `hourglass = { ... }` line of a part of `material` ("concrete", "soil",
 // "charge"): the box's own control where it differs from the soil's (the
-// run's); empty otherwise.
-std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material);
+// run's); empty otherwise. `axis_treatment` (r-z with an SPH zone): the box's parts always carry
+// their own, without the subzonal pressures, and keep the point viscosity (write_run_and_materials
+// gives the soil subzonal pressures and the edge viscosity).
+std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material, bool axis_treatment = false);
 // `geostatic = { ... }` line of a FEM part of `material`: soil under gravity; empty otherwise.
 std::string part_geostatic(const BuriedStructureSpec& s, const std::string& material);
 

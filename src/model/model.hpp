@@ -145,6 +145,12 @@ struct Part {
   // The part's own hourglass control (FEM parts); none: the run's [run.hourglass].
   std::optional<HourglassControl> hourglass;
   std::optional<GeostaticState> geostatic;  // FEM parts: initial stress from the overburden
+  // The part's own subzonal-pressure coefficient (`hourglass.subzonal` of a FEM part) and FEM
+  // viscosity form (`viscosity = { form = ... }`); none: the run's. A buried structure's soil
+  // takes them where the charge's flow tangles its elements, its concrete keeps the point q
+  // (docs/buried-structure.md, "The axis without soil erosion").
+  std::optional<double> subzonal;
+  std::optional<ViscosityForm> viscosity_form;
 };
 
 struct NamedMaterial {
@@ -252,6 +258,10 @@ struct Model {
   HourglassControl hourglass_of(std::size_t part) const {
     const auto& own = parts[part].hourglass;
     return own ? *own : HourglassControl{run.hourglass, run.hourglass_coefficient};
+  }
+  double subzonal_of(std::size_t part) const { return parts[part].subzonal.value_or(run.subzonal_pressure); }
+  ViscosityForm viscosity_form_of(std::size_t part) const {
+    return parts[part].viscosity_form.value_or(run.viscosity_form);
   }
 };
 

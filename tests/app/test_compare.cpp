@@ -117,6 +117,43 @@ TEST(Compare, SideBySideHeadlinePeaksOfSyntheticRuns) {
   EXPECT_DOUBLE_EQ(std::stod(row_starting(t, "energy balance error", 0)), 1.2);
 }
 
+// Three runs whose B1 peak follows f(h) = 20 - 8 h^2 MPa with h = 1, 1/2, 1/4 (12, 18, 19.5 MPa, exact
+// in the gauge CSVs' six digits): the observed order is 2 and the Richardson estimate 20 MPa; a quantity that
+// goes up and down is named so, not given an order.
+TEST(Compare, RefinementGivesTheObservedOrderAndTheRichardsonEstimate) {
+  if (test::run_camouflet_raw("/usr/bin/python3 -c 'import numpy'").status != 0)
+    GTEST_SKIP() << "python3-numpy is not installed";
+  std::vector<fs::path> runs;
+  for (const double h : {1.0, 0.5, 0.25}) runs.push_back(synthetic_run("h" + std::to_string(h), 20.0 - 8.0 * h * h));
+  // An oscillating energy error: 1.2 %, 0.6 %, 0.9 %.
+  std::ofstream(runs[1] / "summary.json") << "{\"final_time_s\": 0.004, \"stop_reason\": \"end time reached\", "
+                                             "\"cycles\": 2468, \"wall_seconds\": 11, "
+                                             "\"energy_J\": {\"relative_error\": 0.006}}\n";
+  std::ofstream(runs[2] / "summary.json") << "{\"final_time_s\": 0.004, \"stop_reason\": \"end time reached\", "
+                                             "\"cycles\": 4936, \"wall_seconds\": 22, "
+                                             "\"energy_J\": {\"relative_error\": 0.009}}\n";
+  const fs::path csv = runs[0].parent_path() / "convergence.csv";
+  const auto r = test::run_camouflet("compare '" + runs[0].string() + "' '" + runs[1].string() + "' '" +
+                                     runs[2].string() + "' --refinement 2 --csv '" + csv.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("observed order | Richardson estimate |"), std::string::npos) << r.output;
+  const auto t = read_table(csv);
+  const auto& b1 = [&] {
+    for (const auto& [q, v] : t)
+      if (q.rfind("B1 peak radial stress", 0) == 0) return v;
+    return std::vector<std::string>{};
+  }();
+  ASSERT_EQ(b1.size(), 5u);
+  test::verify({"camouflet compare --refinement: observed order of a quantity f = 20 - 8 h^2",
+                "the exponent of the synthetic runs (by construction)", 2.0, std::stod(b1[3]), 1e-9, false, "-"});
+  test::verify({"camouflet compare --refinement: Richardson estimate of f = 20 - 8 h^2 MPa",
+                "f(0) of the synthetic runs (by construction)", 20.0, std::stod(b1[4]), 1e-9, false, "MPa"});
+  EXPECT_EQ(row_starting(t, "energy balance error", 3), "oscillates");
+  const auto two = test::run_camouflet("compare '" + runs[0].string() + "' '" + runs[1].string() + "' --refinement 2");
+  EXPECT_EQ(two.status, 2) << two.output;
+  EXPECT_NE(two.output.find("--refinement: needs three output folders"), std::string::npos) << two.output;
+}
+
 TEST(Compare, BadInputNamesTheFolderOrOption) {
   const fs::path coarse = synthetic_run("bad_input", 10.0);
   const auto missing = test::run_camouflet("compare '" + coarse.string() + "' /nonexistent/run");

@@ -68,10 +68,13 @@ double first_over_second_column(double band_width, bool viscosity_hoop) {
 }  // namespace
 
 // The smoothed hoop term with its band of half a smoothing length and the viscosity's hoop term
-// ([sph] smoothed_hoop, smoothed_hoop_width = 0.5, viscosity_hoop): off by default (see
-// docs/theory/sph.md, "The band next to the axis"). Measured on 6 Dec 2026: 1.070 and 1.078 at
-// CFL 0.5999 and 0.6001 (the point terms: 1.95-1.98; the smoothed term without the band stops
-// at 0.48 ms, a charge particle across the axis). About 100 s on one thread.
+// ([sph] smoothed_hoop, smoothed_hoop_width = 0.5, viscosity_hoop; docs/theory/sph.md, "The band
+// next to the axis"), which the generator now writes into the case with the FEM soil's axis
+// treatment (the area form, subzonal pressures, edge viscosity; docs/buried-structure.md, "The
+// axis without soil erosion"). Measured on 6 Dec 2026 with that case: 1.023 (-0.694 m against
+// -0.678 m), 117 s on one thread. With the FEM soil as before (volume form, point q) the band
+// gave 1.068-1.078 at CFL 0.6 +- 1e-4 (the point terms: 1.95-1.98; the smoothed term without the
+// band stops at 0.48 ms, a charge particle across the axis).
 TEST(AxisColumns, CoarseFreeFieldFirstColumnTravelsAsTheSecondWithTheSmoothedHoopTerms) {
   const double ratio = first_over_second_column(0.5, true);
   test::verify({"Coarse free field (100 kg TNT 0.5 m deep, 0.1 m soil particles), r-z, 70 ms, smoothed hoop "

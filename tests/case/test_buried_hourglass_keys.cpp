@@ -64,6 +64,39 @@ TEST(BuriedHourglassKeys, DefaultsWriteTheCaseAsBefore) {
   for (const Part& p : model.parts) EXPECT_FALSE(p.hourglass.has_value()) << p.name;
 }
 
+// r-z with an SPH zone (docs/buried-structure.md, "The axis without soil erosion"): the area form,
+// the soil's subzonal pressures and edge viscosity as the run's, every concrete part its own point
+// q without subzonal pressures, and the particles' smoothed hoop terms with their band. Without the
+// zone (the test above) none of it.
+TEST(BuriedHourglassKeys, SphZoneCaseCarriesTheAxisTreatmentOnTheSoilOnly) {
+  const Model model = read_case_text(buried_structure_case(spec_of("[sph]\nradius = 1.0\n"), "t"), "zone.toml");
+  EXPECT_TRUE(model.run.area_weighted_momentum);
+  EXPECT_TRUE(model.sph.smoothed_hoop);
+  EXPECT_EQ(model.sph.smoothed_hoop_width, 0.5);
+  EXPECT_TRUE(model.sph.viscosity_hoop);
+  int soil = 0, concrete = 0;
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    if (model.parts[p].kind != PartKind::fem) continue;
+    const std::string& name = model.parts[p].name;
+    if (name.rfind("concrete", 0) == 0) {
+      ++concrete;
+      EXPECT_EQ(model.subzonal_of(p), 0.0) << name;
+      EXPECT_EQ(model.viscosity_form_of(p), ViscosityForm::acceleration) << name;
+      EXPECT_EQ(model.hourglass_of(p).coefficient, 0.1) << name;  // the structure's as before
+    } else if (name.rfind("soil", 0) == 0) {
+      ++soil;
+      EXPECT_EQ(model.subzonal_of(p), 1.0) << name;
+      EXPECT_EQ(model.viscosity_form_of(p), ViscosityForm::edge) << name;
+    }
+  }
+  EXPECT_GT(soil, 10);
+  EXPECT_GT(concrete, 3);
+  const Model plain = read_case_text(buried_structure_case(spec_of(""), "t"), "plain.toml");
+  EXPECT_FALSE(plain.run.area_weighted_momentum);
+  EXPECT_EQ(plain.run.subzonal_pressure, 0.0);
+  EXPECT_EQ(plain.run.viscosity_form, ViscosityForm::acceleration);
+}
+
 TEST(BuriedHourglassKeys, ViscousStructureGoesOnEveryConcretePart) {
   const Model model = read_case_text(
       buried_structure_case(spec_of("[structure]\nhourglass = { form = \"viscous\", coefficient = 0.05 }\n"),

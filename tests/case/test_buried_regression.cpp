@@ -173,7 +173,8 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   ASSERT_EQ(model.joins.size(), 1u);
   const RunSummary summary = run_model(model, test::quiet_run_options(out));
   ASSERT_FALSE(summary.failed) << summary.stop_reason;
-  // With the SPH zone the balance closes to 0.16 % here (0.11 % with the longer step the soil's
+  // With the SPH zone the balance closes to 0.76 % here with the axis treatment (0.16 % without it;
+  // 0.11 % with the longer step the soil's
   // release did not bound; 1.0 % with the pair weights at the
   // start of the step, 4.1 % with the coarser, 2.4 % heavy charge of the generator before; the join resolves
   // the shock passing it only to first order in the spacing, see tests/case/test_joined_case.cpp), against
@@ -185,6 +186,20 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   const auto b = column_peaks(out / "group_B.csv");
   const auto s = column_peaks(out / "structure.csv");
   const auto bars = column_peaks(out / "bars.csv");
+  // Updated 6 Dec 2026: the generator gives an r-z case with an SPH zone the axis treatment
+  // (docs/buried-structure.md, "The axis without soil erosion"): the particles' smoothed hoop
+  // terms with their band and the viscosity's hoop term, the FEM in the area form, the soil's
+  // subzonal pressures and edge viscosity (the box keeps the point q). B2 3.20169e7 -> 8.88484e6 Pa
+  // (-72 %, the zone's corner), t9 9.12064e7 -> 5.62323e7 Pa (-38 %), t2 20.8466 -> 14.9292 m/s
+  // (-28 %), A1 3.19276e8 -> 3.70789e8 Pa (+16 %), B1 2.36113e8 -> 2.66136e8 Pa (+13 %), rebar
+  // 5.78735e-3 -> 1.73669e-2 (x3, one bar's single-point strain); the energy balance closes to
+  // 0.76 % (0.16 %). Taken apart with the CLI on the same case (B2 / A1 / t9 / t2): the particles'
+  // hoop terms alone 72.6 MPa / 390 MPa / 120 MPa / 27.0 m/s; all but the edge viscosity 51.7 / 367
+  // / 101 / 22.7; all but the subzonal pressures 7.26 / 382 / 66 / 17.0; all but the area form 7.41
+  // / 387 / 57 / 15.0. The edge viscosity (no limiter: it heats a smooth compression as tr D does)
+  // is what takes B2 down: this zone is 0.3 m across for 2 kg (0.24 m/kg^1/3), so the FEM soil
+  // beside it carries a strong shock; in the wang2005 cases (3.5 m for 100 kg, 0.75 m/kg^1/3) the
+  // group B peaks beyond the zone moved by less than 5 % with it.
   // Updated 2 Dec 2026: the bulk viscosity acts on the strain rate along each element's
   // acceleration by default (it was tr D; the particles' viscosity is unchanged, so the moves
   // come from the FEM soil and the box): rebar 4.53936e-3 -> 5.78735e-3 (+27 %, one bar's
@@ -227,12 +242,12 @@ TEST(BuriedRegression, ReducedCaseWithSphZoneGaugePeaks) {
   // 19.2332 m/s, rebar 2.39349e-3 -> 2.70126e-3; B1 and A1 moved less than 3 %.
   verify_peaks("Reduced buried-structure case with SPH zone: peak ", "regression (SPH zone) ",
                {
-                   {"group_B B1 pressure", 2.36113e8, "Pa", b.at("B1.pressure")},
-                   {"group_B B2 pressure", 3.20169e7, "Pa", b.at("B2.pressure")},
-                   {"group_A A1 pressure", 3.19276e8, "Pa", a.at("A1.pressure")},
-                   {"structure t9 stress_xx", 9.12064e7, "Pa", s.at("t9.stress_xx")},
-                   {"structure t2 velocity_x", 20.8466, "m/s", s.at("t2.velocity_x")},
-                   {"rebar front_out.1 axial_strain", 5.78735e-3, "-", bars.at("front_out.1.axial_strain")},
+                   {"group_B B1 pressure", 2.66136e8, "Pa", b.at("B1.pressure")},
+                   {"group_B B2 pressure", 8.88484e6, "Pa", b.at("B2.pressure")},
+                   {"group_A A1 pressure", 3.70789e8, "Pa", a.at("A1.pressure")},
+                   {"structure t9 stress_xx", 5.62323e7, "Pa", s.at("t9.stress_xx")},
+                   {"structure t2 velocity_x", 14.9292, "m/s", s.at("t2.velocity_x")},
+                   {"rebar front_out.1 axial_strain", 1.73669e-2, "-", bars.at("front_out.1.axial_strain")},
                });
 }
 

@@ -96,7 +96,7 @@ void write_run_and_materials(const BuriedStructureSpec& s, const char* geometry,
   // default's first SPH column moves with the second (docs/buried-structure.md, "The axis
   // without soil erosion"). Not without the zone: there the charge and the strongest shock are
   // FEM, and the edge viscosity without its limiter halves the near-field peaks (the same page).
-  const bool axis_treatment = std::string(geometry) == "axisymmetric" && s.sph_radius > 0.0;
+  const bool axis_treatment = s.axis_treatment();
   if (axis_treatment) b += "axisymmetric_momentum = \"area\"  # the r-z area form (docs/buried-structure.md, \"The axis without soil erosion\")\n";
   if (s.run.gravity > 0.0)
     fmt::format_to(

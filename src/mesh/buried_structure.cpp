@@ -284,7 +284,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
       fmt::format_to(out,
                      "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\n{}{}block = {{ origin = [{:.9g}, {:.9g}], "
                      "size = [{:.9g}, {:.9g}], cells = [{}, {}], grading = [{:.9g}, {:.9g}] }}\n\n",
-                     name, material, buried_detail::part_hourglass(s, material, s.sph_radius > 0.0),
+                     name, material, buried_detail::part_hourglass(s, material, s.axis_treatment()),
                      buried_detail::part_geostatic(s, material), ri.a, -yj.b + 0.0, ri.b - ri.a, yj.b - yj.a,
                      ri.cells, yj.cells, ri.grading, 1.0 / yj.grading);
       if (i == 0) fmt::format_to(bout, "[[boundary]]\ntype = \"axis\"\nset = \"{}.xmin\"\n\n", name);
@@ -316,8 +316,9 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
     // "SPH viscosity"); alpha = 0.2 keeps it near the FEM bulk viscosity's.
     // Next to the axis the hoop terms from the smoothed sums, handed over to the point values
     // within half a smoothing length of it, and the viscosity's own hoop term: with them the
-    // first column of particles moves as the second (coarse: 1.07 against 1.97 with the point
-    // terms; docs/theory/sph.md, "The band next to the axis").
+    // first column of particles moves as the second (coarse, with the FEM soil's treatment of
+    // write_run_and_materials: 1.01 against 1.99 before; docs/theory/sph.md, "The band next to
+    // the axis").
     b += "[sph]\nviscosity_alpha = 0.2  # linear term (see docs/buried-structure.md, \"SPH viscosity\")\n"
          "viscosity_beta = 2.0   # quadratic term\n"
          "smoothed_hoop = true  # the axis (docs/theory/sph.md, \"The band next to the axis\")\n"

@@ -92,6 +92,9 @@ struct BuriedStructureSpec {
   double structure_hourglass_kappa() const {
     return structure_hourglass_coefficient > 0.0 ? structure_hourglass_coefficient : hourglass_coefficient;
   }
+  // r-z with an SPH zone: the case gets the axis treatment (buried_case_tables.cpp,
+  // write_run_and_materials; docs/buried-structure.md, "The axis without soil erosion").
+  bool axis_treatment() const { return !three_d && sph_radius > 0.0; }
   // The depth of the SPH zone's bottom face below the ground (m).
   double sph_bottom() const { return sph_depth > 0.0 ? sph_depth : burst_depth + sph_radius; }
   // Extent of the uniform near-field mesh around the charge centre (m), sideways and below: it

@@ -75,6 +75,8 @@ void read_run(TomlReader& r, Model& model) {
     run.viscosity_linear = v->non_negative("linear", run.viscosity_linear);
     run.viscosity_quadratic = v->non_negative("quadratic", run.viscosity_quadratic);
     run.viscosity_form = read_viscosity_form(*v, run.viscosity_form);
+    run.viscosity_limiter =
+        v->choice("limiter", {"none", "csw"}, run.viscosity_limiter ? "csw" : "none") == "csw";
     v->finish();
   }
   if (auto h = r.table("hourglass")) {

@@ -18,8 +18,14 @@
 // and their forces sum to the scalar q = rho (c_q^2 |du| + c_l c) |du| over
 // the element's width l: the coefficients keep the meaning of [run.viscosity].
 // The forces do the work F_k . du (>= 0 where they were set), heating the
-// element. No limiter (CSW's psi = 0): a smooth compression is heated as by
-// the volumetric scalar form.
+// element. Without the limiter (CSW's psi = 0) a smooth compression is heated
+// as by the volumetric scalar form, and a smooth shear flow too: in a flowing
+// soil the linear term then acts as a shear viscosity of order rho c_l c l.
+// With it (edge_limiter below, [run.viscosity] limiter) each edge's force is
+// scaled by 1 - psi, psi from the velocity differences along the edge's
+// continuations into the neighbouring elements: 1 in any linear velocity
+// field (no force), 0 across a jump (the full force).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -87,12 +93,40 @@ inline void edge_median_areas(const double (&x)[D][ElementEdges<D>::nodes], bool
   }
 }
 
+// The limiter psi of CSW 1998 (their section 5, the "Christensen" limiter in its multi-dimensional
+// edge form) for an edge with velocity difference du and extent dx, and its continuations
+// beyond its first node (du_l = v_p - v_l, dx_l = x_p - x_l: the edge from the node l beyond p)
+// and beyond its second (du_r = v_r - v_q, dx_r = x_r - x_q); nullptr where the edge has no
+// continuation (a boundary, an irregular node), and then the other side's ratio stands for both.
+// The ratios compare the velocity gradients along the three edges,
+//   r_l = (du_l . du) |dx| / (|du|^2 |dx_l|),  and r_r alike,
+//   psi = max(0, min((r_l + r_r) / 2, 2 r_l, 2 r_r, 1)):
+// 1 where the gradient is the same on both sides (a linear field: no viscosity), 0 where it
+// changes sign or the edge stands alone (the full force).
+template <int D>
+inline double edge_limiter(const double* du, const double* dx, const double* du_l, const double* dx_l,
+                           const double* du_r, const double* dx_r) {
+  double du2 = 0.0, dx2 = 0.0;
+  for (int i = 0; i < D; ++i) du2 += du[i] * du[i], dx2 += dx[i] * dx[i];
+  if (du2 == 0.0 || (du_l == nullptr && du_r == nullptr)) return 0.0;
+  const auto ratio = [&](const double* du_s, const double* dx_s) {
+    double dot = 0.0, ds2 = 0.0;
+    for (int i = 0; i < D; ++i) dot += du_s[i] * du[i], ds2 += dx_s[i] * dx_s[i];
+    return ds2 > 0.0 ? dot * std::sqrt(dx2 / ds2) / du2 : 0.0;
+  };
+  const double r_l = du_l != nullptr ? ratio(du_l, dx_l) : ratio(du_r, dx_r);
+  const double r_r = du_r != nullptr ? ratio(du_r, dx_r) : r_l;
+  return std::max(0.0, std::min({0.5 * (r_l + r_r), 2.0 * r_l, 2.0 * r_r, 1.0}));
+}
+
 // The edge forces F (count * D: F_k on the edge's first node, -F_k on its second) of an element
-// at positions x with node velocities v, density rho (kg/m^3) and sound speed c (m/s).
+// at positions x with node velocities v, density rho (kg/m^3) and sound speed c (m/s); psi: the
+// limiter of each edge (edge_limiter), nullptr for none.
 template <int D>
 inline void edge_viscous_forces(const double (&x)[D][ElementEdges<D>::nodes],
                                 const double (&v)[D][ElementEdges<D>::nodes], bool axisymmetric, double rho,
-                                double c, double c_quadratic, double c_linear, double* force) {
+                                double c, double c_quadratic, double c_linear, double* force,
+                                const double* psi = nullptr) {
   using E = ElementEdges<D>;
   double area[E::count];
   edge_median_areas<D>(x, axisymmetric, area);
@@ -105,7 +139,9 @@ inline void edge_viscous_forces(const double (&x)[D][ElementEdges<D>::nodes],
       closing += du[i] * (x[i][q] - x[i][p]);
       du2 += du[i] * du[i];
     }
-    const double coefficient = closing < 0.0 ? rho * (cq2 * std::sqrt(du2) + c_linear * c) * area[k] : 0.0;
+    const double kept = psi != nullptr ? 1.0 - psi[k] : 1.0;
+    const double coefficient =
+        closing < 0.0 ? kept * rho * (cq2 * std::sqrt(du2) + c_linear * c) * area[k] : 0.0;
     for (int i = 0; i < D; ++i) force[k * D + i] = coefficient * du[i];
   }
 }

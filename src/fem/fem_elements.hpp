@@ -26,6 +26,9 @@ struct ViscosityControl {
   // acceleration (Wilkins 1980), or the volumetric rate tr D; or no q but a
   // force on each closing edge (edge_viscosity.hpp).
   ViscosityForm form = ViscosityForm::volumetric;
+  // The edge form's limiter (edge_viscosity.hpp, edge_limiter); it needs the elements'
+  // edge_continuation.
+  bool limiter = false;
 };
 
 // add_internal_forces assembles the nodal forces on several threads without
@@ -135,6 +138,9 @@ class FemElements {
   // N, e * edges * D: the edge viscosity's force on each edge's first node (its second takes the
   // opposite) from the latest kinematics; empty unless [run.viscosity] form = "edge".
   std::vector<double> edge_force;
+  // The edge viscosity's limiter: the node beyond each end of each edge (edge_continuation.hpp),
+  // (e * edges + k) * 2 + end; empty unless [run.viscosity] limiter with the edge form.
+  std::vector<std::int64_t> edge_continuation;
   // Subzonal pressures (subzonal_pressure.hpp), e * nodes each; empty unless some element's
   // part has subzonal > 0 ([run.hourglass] or its own): each corner subzone's share of the
   // element's mass, its pressure difference dp_s (Pa) and volume V_s (m^3) at the latest

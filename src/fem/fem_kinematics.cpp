@@ -262,8 +262,34 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
                              : 1.0;
           for (int i = 0; i < D; ++i) vw[i][a] = ring * vl[i][a];
         }
+        // The limiter from the velocity differences along each edge's continuations (global
+        // nodes at the same x(n+1), v(n+1/2)).
+        double psi[ElementEdges<D>::count];
+        const bool limited = !edge_continuation.empty();
+        if (limited) {
+          using Edges = ElementEdges<D>;
+          for (int kk = 0; kk < Edges::count; ++kk) {
+            const int first = Edges::node[kk][0], second = Edges::node[kk][1];
+            double du[D], dx[D], du_l[D], dx_l[D], du_r[D], dx_r[D];
+            for (int i = 0; i < D; ++i) du[i] = vl[i][second] - vl[i][first], dx[i] = xl[i][second] - xl[i][first];
+            const std::int64_t* beyond = &edge_continuation[(e * Edges::count + static_cast<std::size_t>(kk)) * 2];
+            if (beyond[0] >= 0)
+              for (int i = 0; i < D; ++i) {
+                const std::size_t n = static_cast<std::size_t>(beyond[0]) * D + static_cast<std::size_t>(i);
+                du_l[i] = vl[i][first] - v[n], dx_l[i] = xl[i][first] - x[n];
+              }
+            if (beyond[1] >= 0)
+              for (int i = 0; i < D; ++i) {
+                const std::size_t n = static_cast<std::size_t>(beyond[1]) * D + static_cast<std::size_t>(i);
+                du_r[i] = v[n] - vl[i][second], dx_r[i] = x[n] - xl[i][second];
+              }
+            psi[kk] = edge_limiter<D>(du, dx, beyond[0] >= 0 ? du_l : nullptr, beyond[0] >= 0 ? dx_l : nullptr,
+                                      beyond[1] >= 0 ? du_r : nullptr, beyond[1] >= 0 ? dx_r : nullptr);
+          }
+        }
         const double old_power = edge_viscous_power<D>(force, vw);
-        edge_viscous_forces<D>(xl, vl, ring_volumes, rho[l], wave_speed[e], visc.quadratic, visc.linear, force);
+        edge_viscous_forces<D>(xl, vl, ring_volumes, rho[l], wave_speed[e], visc.quadratic, visc.linear, force,
+                               limited ? psi : nullptr);
         const double heat = 0.5 * dt * (old_power + edge_viscous_power<D>(force, vw));
         pts_energy[p] += heat / mass[e];
         viscous_work += heat;

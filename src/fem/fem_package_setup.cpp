@@ -7,6 +7,7 @@
 #include <array>
 
 #include "core/error.hpp"
+#include "fem/edge_continuation.hpp"
 #include "fem/edge_viscosity.hpp"
 #include "fem/fem_package.hpp"
 #include "model/geostatic_stress.hpp"
@@ -121,7 +122,8 @@ FemPackage<D>::FemPackage(const Model& model) : model_(&model) {
   }
   // Subzonal pressures and the viscosity form: each element its part's (Model::subzonal_of,
   // viscosity_form_of); the forms stored per element only where the parts differ.
-  viscosity = {model.run.viscosity_quadratic, model.run.viscosity_linear, model.run.viscosity_form};
+  viscosity = {model.run.viscosity_quadratic, model.run.viscosity_linear, model.run.viscosity_form,
+               model.run.viscosity_limiter};
   std::vector<double> subzonal(ne);
   std::vector<ViscosityForm> forms(ne);
   bool mixed_forms = false;
@@ -135,6 +137,8 @@ FemPackage<D>::FemPackage(const Model& model) : model_(&model) {
   if (mixed_forms) elements.set_viscosity_forms(std::move(forms));
   const bool edges = mixed_forms ? elements.edge_form_anywhere : viscosity.form == ViscosityForm::edge;
   if (edges) elements.edge_force.assign(ne * ElementEdges<D>::count * D, 0.0);
+  if (edges && viscosity.limiter)
+    elements.edge_continuation = edge_continuations<D>(elements.connectivity, nn, position.data());
 }
 
 // The geostatic initial state of the FEM soil parts under gravity (docs/theory/gravity.md): each

@@ -51,6 +51,9 @@ struct RunControl {
   // convergence takes no q), on tr D (the classic form), or a force on each closing edge
   // (Caramana, Shashkov and Whalen 1998): docs/theory-fem.md.
   ViscosityForm viscosity_form = ViscosityForm::acceleration;
+  // The edge form's limiter (CSW 1998, fem/edge_viscosity.hpp): no edge force in a linear
+  // velocity field, the full force across a jump.
+  bool viscosity_limiter = false;
   // r-z momentum in area-weighted form (Wilkins 1964) instead of the volume form
   // (the default): keeps converging spherical flow spherical; docs/theory-fem.md.
   bool area_weighted_momentum = false;

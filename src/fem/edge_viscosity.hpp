@@ -93,8 +93,8 @@ inline void edge_median_areas(const double (&x)[D][ElementEdges<D>::nodes], bool
   }
 }
 
-// The limiter psi of CSW 1998 (their section 5, the "Christensen" limiter in its multi-dimensional
-// edge form) for an edge with velocity difference du and extent dx, and its continuations
+// The limiter psi of CSW 1998 (section 5, in its edge form) for an edge with velocity
+// difference du and extent dx, and its continuations
 // beyond its first node (du_l = v_p - v_l, dx_l = x_p - x_l: the edge from the node l beyond p)
 // and beyond its second (du_r = v_r - v_q, dx_r = x_r - x_q); nullptr where the edge has no
 // continuation (a boundary, an irregular node), and then the other side's ratio stands for both.

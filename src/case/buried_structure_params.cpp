@@ -77,6 +77,16 @@ BuriedStructureSpec read_buried_structure_params_text(const std::string& text,
       s.free_field = t->choice("kind", {"box", "free_field"}, "box") == "free_field";
       s.where["structure.kind"] = t->where("kind");
     }
+    if (t->has("interface")) {
+      s.slide_interface = t->choice("interface", {"fused", "slide"}, "fused") == "slide";
+      s.where["structure.interface"] = t->where("interface");
+    }
+    if (t->has("friction")) {
+      if (!s.slide_interface)
+        t->fail("friction", "a friction coefficient needs interface = \"slide\" (a fused interface does not slide)");
+      s.interface_friction = t->non_negative("friction", 0.0);
+      s.where["structure.friction"] = t->where("friction");
+    }
     read_hourglass(*t, s.structure_hourglass, s.structure_hourglass_coefficient, s);
     t->finish();
   }

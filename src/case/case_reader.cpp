@@ -29,6 +29,7 @@ Model build(const toml::table& doc, const std::filesystem::path& file) {
   case_detail::read_bars(root, model);
   if (auto sph = root.table("sph")) case_detail::read_sph(*sph, model);
   case_detail::read_boundaries(root, model);
+  case_detail::read_slide_surfaces(root, model);  // detaches parts: after the meshes and their sets
   case_detail::read_contacts(root, model);
   case_detail::read_gauges(root, model);
   case_detail::read_detonations(root, model);
@@ -88,6 +89,12 @@ std::string describe_model(const Model& model) {
   fmt::format_to(out,
                  "{} boundary condition(s), {} gauge group(s) with {} gauge(s), {} detonation point(s)\n",
                  model.boundaries.size(), model.gauges.size(), gauges, model.detonations.size());
+  for (const SlideSurface& slide : model.slide_surfaces) {
+    fmt::format_to(out, "slide surface:");
+    for (const int p : slide.parts) fmt::format_to(out, " {}", model.parts[static_cast<std::size_t>(p)].name);
+    fmt::format_to(out, " detached from the other FEM parts along {} faces, friction {:g}, penalty scale {:g}\n",
+                   slide.elements_a.size(), slide.friction, slide.penalty_scale);
+  }
   return s;
 }
 

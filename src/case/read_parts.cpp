@@ -138,18 +138,6 @@ struct PendingFill {
   SourceLocation exclude_where;
 };
 
-std::vector<std::string> name_list(TomlReader& p, const std::string& key) {
-  const toml::array* list = p.array(key);
-  if (!list || list->empty()) p.fail(key, "expected a non-empty list of part names");
-  std::vector<std::string> out;
-  for (const auto& item : *list) {
-    const auto name = item.value<std::string>();
-    if (!name) p.fail(key, "expected a list of part names (strings)");
-    out.push_back(*name);
-  }
-  return out;
-}
-
 // `fill`, `join`, `cut_from` and `exclude` of an SPH part (part names are
 // resolved once all parts are read: they may name a part defined later).
 PendingFill read_sph_part(TomlReader& p, Model& model, int index, const std::filesystem::path& case_dir) {
@@ -265,6 +253,18 @@ GeostaticState read_part_geostatic(TomlReader& t, const Model& model, const Part
 }
 
 }  // namespace
+
+std::vector<std::string> name_list(TomlReader& p, const std::string& key) {
+  const toml::array* list = p.array(key);
+  if (!list || list->empty()) p.fail(key, "expected a non-empty list of part names");
+  std::vector<std::string> out;
+  for (const auto& item : *list) {
+    const auto name = item.value<std::string>();
+    if (!name) p.fail(key, "expected a list of part names (strings)");
+    out.push_back(*name);
+  }
+  return out;
+}
 
 void read_parts(TomlReader& root, Model& model, const std::filesystem::path& case_dir) {
   const int dim = model.dimension();

@@ -40,4 +40,10 @@ void check_name(const TomlReader& table, const std::string& key, const std::stri
 // nearest defined name, when there is none (case/read_parts.cpp).
 int material_index(const Model& model, TomlReader& table, const std::string& key);
 
+// A non-empty list of part names at `key` (resolved by the caller; case/read_parts.cpp).
+std::vector<std::string> name_list(TomlReader& table, const std::string& key);
+
+// [[slide_surfaces]]: FEM parts detached from the rest and sliding on it (case/read_slide_surfaces.cpp).
+void read_slide_surfaces(TomlReader& root, Model& model);
+
 }  // namespace camouflet::case_detail

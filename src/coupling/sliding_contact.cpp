@@ -7,27 +7,12 @@
 #include <cmath>
 #include <limits>
 
+#include "coupling/face_projection.hpp"
+
 namespace camouflet {
 
-namespace {
-
-// Closest projection of point p onto a triangle's plane when it falls inside
-// the triangle: barycentric weights w and signed distance along the unit normal n.
-bool project_triangle(const Vec<3>& p, const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& n,
-                      std::array<double, 3>& w, double& g) {
-  const Vec<3> ab = b - a, ac = c - a, ap = p - a;
-  g = dot(ap, n);
-  const Vec<3> q = ap - n * g;
-  const double d00 = dot(ab, ab), d01 = dot(ab, ac), d11 = dot(ac, ac);
-  const double d20 = dot(q, ab), d21 = dot(q, ac);
-  const double det = d00 * d11 - d01 * d01;
-  if (!(std::abs(det) > 0.0)) return false;
-  const double wb = (d11 * d20 - d01 * d21) / det, wc = (d00 * d21 - d01 * d20) / det;
-  w = {1.0 - wb - wc, wb, wc};
-  return w[0] >= 0.0 && wb >= 0.0 && wc >= 0.0;
-}
-
-}  // namespace
+using contact_geometry::project_triangle;
+using contact_geometry::quad_normal;
 
 template <int D>
 SlidingContact<D>::SlidingContact(const Model& model) {
@@ -88,12 +73,8 @@ double SlidingContact<D>::apply(sph::SphSystem<D>& particles, const double* x, c
           }
         } else {
           const Vec<3> c0 = node(q[0]), c1 = node(q[1]), c2 = node(q[2]), c3 = node(q[3]);
-          const Vec<3> d1 = c2 - c0, d2 = c3 - c1;
-          Vec<3> n{
-              {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]}};
-          const double len = std::sqrt(dot(n, n));
-          if (!(len > 0.0)) continue;
-          n = n * (1.0 / len);
+          Vec<3> n;
+          if (!quad_normal(c0, c1, c2, c3, n)) continue;
           const std::array<std::array<int, 3>, 2> triangles{{{0, 1, 2}, {0, 2, 3}}};
           for (const auto& tri : triangles) {
             std::array<double, 3> w{};

@@ -13,6 +13,17 @@
 
 namespace camouflet::buried_detail {
 
+void write_slide_interface(const BuriedStructureSpec& s, const std::vector<std::string>& box_parts, std::string& b) {
+  if (!s.slide_interface || s.free_field || box_parts.empty()) return;
+  auto out = std::back_inserter(b);
+  b += "# Soil-structure interface (structure.interface = \"slide\"): the box's parts are detached from the\n"
+       "# soil along the faces they share, which may separate, recontact and slide with Coulomb friction\n"
+       "# (Wang et al. 2005, section 4.13; coupling/slide_surface.hpp).\n[[slide_surfaces]]\nparts = [";
+  for (std::size_t k = 0; k < box_parts.size(); ++k)
+    fmt::format_to(out, "{}\"{}\"", k == 0 ? "" : ", ", box_parts[k]);
+  fmt::format_to(out, "]\nfriction = {}\n\n", s.interface_friction);
+}
+
 void write_member_gauges(const BuriedStructureSpec& s, bool three_d, std::string& b) {
   auto out = std::back_inserter(b);
   // The walls take the box's full height, the roof and the floor the span between the walls, so no

@@ -271,6 +271,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
   // One part per block of the tensor grid: adjacent blocks share nodes.
   std::string boundaries;
   auto bout = std::back_inserter(boundaries);
+  std::vector<std::string> box_parts;  // the concrete blocks (a slide interface detaches them)
   const char* far_type = s.transmitting ? "transmitting" : "fixed";
   for (std::size_t i = 0; i < g.r.size(); ++i)
     for (std::size_t j = 0; j < g.depth.size(); ++j) {
@@ -280,6 +281,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
       if (fill == Fill::empty) continue;
       const char* material = fill == Fill::charge ? "charge" : fill == Fill::concrete ? "concrete" : "soil";
       const std::string name = fmt::format("{}_r{}_z{}", material, i, j);
+      if (fill == Fill::concrete) box_parts.push_back(name);
       // Grading along z runs from the block's deep edge up: the inverse of the depth grading.
       fmt::format_to(out,
                      "[[parts]]\nname = \"{}\"\nmaterial = \"{}\"\n{}{}block = {{ origin = [{:.9g}, {:.9g}], "
@@ -326,6 +328,7 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
          "viscosity_hoop = true\n\n";
   }
   if (s.has_rebar && !s.free_field) write_rebar(s, b);
+  buried_detail::write_slide_interface(s, box_parts, b);
   b += "# Boundaries: the axis r = 0; the far edges; the ground surface z = 0 is free.\n";
   b += boundaries;
 

@@ -48,6 +48,12 @@ struct BuriedStructureSpec {
   double wall_thickness = 0.1;  // m
   double top_depth = 0.0;       // m, depth of the roof's top face
   std::string concrete = "concrete_35mpa_wang2005";
+  // The soil-structure interface: false = fused (the box's nodes shared with the soil, the paper's
+  // model, section 4.13: a rough interface); true = a slide surface ([[slide_surfaces]],
+  // coupling/slide_surface.hpp) that lets the soil separate, recontact and slide on the box with
+  // Coulomb friction `interface_friction`.
+  bool slide_interface = false;
+  double interface_friction = 0.0;
   std::string soil = "sandy_clay_wang2005";
   double soil_wave_speed = 1400.0;  // m/s, loading wave speed for the reflection estimate (Table 1)
   // Domain: r in [0, domain_radius], z in [-domain_depth, 0].

@@ -293,6 +293,7 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
   // One part per block of the tensor grid: adjacent blocks share nodes.
   std::string boundaries;
   auto bout = std::back_inserter(boundaries);
+  std::vector<std::string> box_parts;  // the concrete blocks (a slide interface detaches them)
   const char* far_type = s.transmitting ? "transmitting" : "fixed";
   for (std::size_t i = 0; i < g.x.size(); ++i)
     for (std::size_t j = 0; j < g.y.size(); ++j)
@@ -302,6 +303,7 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
         if (fill == Fill::empty) continue;
         const char* material = fill == Fill::charge ? "charge" : fill == Fill::concrete ? "concrete" : "soil";
         const std::string name = fmt::format("{}_x{}_y{}_z{}", material, i, j, k);
+        if (fill == Fill::concrete) box_parts.push_back(name);
         // Along z the block runs from its deep face up: the inverse of the depth grading.
         fmt::format_to(
             out,
@@ -345,6 +347,7 @@ std::string case_3d(const BuriedStructureSpec& s, const std::string& regenerate)
          "viscosity_beta = 2.0   # quadratic term\n\n";
   }
   if (s.has_rebar && !s.free_field) write_rebar_3d(s, b);
+  write_slide_interface(s, box_parts, b);
   b += "# Boundaries: the symmetry plane y = 0; the far faces; the ground surface z = 0 is free.\n";
   b += boundaries;
   fmt::format_to(out, "[[detonation]]\nposition = {}  # m, the charge centre\ntime = 0.0\n\n",

@@ -53,6 +53,10 @@ std::string part_hourglass(const BuriedStructureSpec& s, const std::string& mate
 // `geostatic = { ... }` line of a FEM part of `material`: soil under gravity; empty otherwise.
 std::string part_geostatic(const BuriedStructureSpec& s, const std::string& material);
 
+// The [[slide_surfaces]] block that detaches the box's parts `box_parts` from the soil
+// (structure.interface = "slide"), with its comment; nothing for a fused interface or a free field.
+void write_slide_interface(const BuriedStructureSpec& s, const std::vector<std::string>& box_parts, std::string& b);
+
 // Keys of one geometry given in the other (structure.width, domain.side in
 // r-z) or missing (structure.width in 3-D): InputError naming the key.
 void check_geometry_keys(const BuriedStructureSpec& s);

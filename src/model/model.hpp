@@ -231,6 +231,20 @@ struct Contact {
   SourceLocation where;
 };
 
+// A slide surface between FEM parts ([[slide_surfaces]]; coupling/slide_surface.hpp): the parts
+// of side A are detached from the rest of the mesh along the faces they share with it (the nodes
+// there doubled, mesh/detach_parts.hpp) and the two sides meet through a symmetric penalty contact
+// with Coulomb friction, separation and recontact.
+struct SlideSurface {
+  std::vector<int> parts;      // index into Model::parts: side A; side B is every other FEM part
+  double friction = 0.0;       // Coulomb coefficient
+  double penalty_scale = 0.3;  // stiffness k = penalty_scale m_eff / dt^2 per node-face pair
+  // The interface as detached: faces (2 or 4 nodes, outward from their element) of side A and of
+  // side B, and the element each face bounds (0-based).
+  std::vector<std::int64_t> faces_a, faces_b, elements_a, elements_b;
+  SourceLocation where;
+};
+
 struct Model {
   std::string case_file;  // path as given
   std::string title;
@@ -245,6 +259,7 @@ struct Model {
   std::vector<BoundaryCondition> boundaries;
   std::vector<Join> joins;        // SPH-FEM joins (coupling/)
   std::vector<Contact> contacts;  // SPH-FEM sliding interfaces (coupling/)
+  std::vector<SlideSurface> slide_surfaces;  // FEM-FEM sliding interfaces (coupling/)
   std::vector<GaugeGroup> gauges;
   std::vector<DetonationPoint> detonations;
   std::vector<SourceLocation> detonation_where;  // same order as detonations

@@ -1,5 +1,5 @@
 // The coupling stages of step() (solver.cpp lists them all): the join's and the contact's
-// forces between the particles and the FEM nodes, and the join following the FEM package's
+// forces between the particles and the FEM nodes, the slide surfaces' between FEM parts, and the join following the FEM package's
 // erosion.
 #include "solver/solver.hpp"
 
@@ -8,6 +8,9 @@ namespace camouflet {
 template <int D>
 void Solver<D>::add_coupling_forces() {
   if (coupling_) coupling_->add_forces(centred_step());  // join reactions, contact (coupling/)
+  if (!slides_.empty())  // FEM-FEM slide surfaces, on v(n-1/2)
+    slides_.apply(fem_.position.data(), fem_.velocity.data(), fem_.node_mass.data(), fem_.elements.eroded,
+                  fem_.force.data(), centred_step(), dt_stable_);
 }
 
 template <int D>

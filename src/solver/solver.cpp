@@ -11,6 +11,7 @@ namespace camouflet {
 template <int D>
 Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode), fem_(model) {
   boundaries_ = Boundaries<D>(model, fem_);
+  slides_ = SlideSurfaces<D>(model);
   boundaries_.constrain(fem_.velocity, 0.0);
   register_package(fem_);  // FEM, a member, first at every stage
 
@@ -119,6 +120,11 @@ void Solver<D>::constrain_velocities() {
     split_.join += powers.join * dt_mean;
     split_.contact += powers.contact * dt_mean;
   }
+  if (!slides_.empty()) {  // the slide surfaces' work on v(n-1/2) and v(n+1/2) (coupling/slide_surface.hpp)
+    const double work = slides_.settle(fem_.velocity.data(), dt_mean);
+    energy_.boundary_work += work;
+    split_.contact += work;
+  }
 }
 
 template <int D>
@@ -158,6 +164,7 @@ void Solver<D>::choose_time_step() {
       reason = vote.reason;
       setter = &vote;
     }
+  dt_stable_ = std::min(dt, run.max_dt);
   // Hold the step while the limit sits within 2 % above it: a step that
   // follows |v| every cycle pumps energy in or out of a vibration (the
   // central difference conserves energy only between changes of dt).

@@ -17,6 +17,7 @@
 
 #include "boundary/boundaries.hpp"
 #include "core/state_visitor.hpp"
+#include "coupling/slide_surface.hpp"
 #include "coupling/sph_fem_coupling.hpp"
 #include "fem/fem_package.hpp"
 #include "materials/material_points.hpp"
@@ -95,7 +96,7 @@ class Solver {
     double constraints = 0.0;   // J, reactions of fixed/prescribed/symmetry nodes and applied loads
     double join = 0.0;          // J, SPH-FEM join work booked by no internal energy (docs/theory/coupling.md)
     double join_face = 0.0;     // J, the part of `join` done through the coupling points' centre-face offset
-    double contact = 0.0;       // J, particle-face contact work
+    double contact = 0.0;       // J, contact work: particle-face contacts and FEM slide surfaces
     // J, the parts of EnergyBalance::kinetic and ::internal each package holds, in packages_'
     // order (energy.csv's sph_kinetic and sph_internal are the share named "sph").
     struct Share {
@@ -176,6 +177,8 @@ class Solver {
   std::unique_ptr<SphFemCoupling<D>> coupling_;
   // Node constraints, loads, dashpots and the particles' mirror planes (boundary/boundaries.hpp).
   Boundaries<D> boundaries_;
+  // The FEM-FEM slide surfaces (coupling/slide_surface.hpp), their work booked with the contact's.
+  SlideSurfaces<D> slides_;
 
   double time_ = 0.0;
   std::int64_t cycle_ = 0;
@@ -185,6 +188,9 @@ class Solver {
   std::vector<char> relaxation_held_materials_;
   double dt_ = 0.0;       // s, the step just taken (t_{n-1/2})
   double dt_next_ = 0.0;  // s, the step to take next (t_{n+1/2})
+  // s, the packages' stable step times cfl at the last vote, before the growth limit and the
+  // driver's cuts: the slide surfaces' stiffness follows it (coupling/slide_surface.hpp).
+  double dt_stable_ = 0.0;
   TimeStepLimit limit_;
   EnergyBalance energy_;
   EnergySplit split_;

@@ -15,6 +15,7 @@ void Solver<D>::visit_state(StateVisitor& v) {
   visit(v, "cycle", cycle_);
   visit(v, "dt", dt_);
   visit(v, "dt_next", dt_next_);
+  if (!slides_.empty()) visit(v, "dt_stable", dt_stable_);  // the slide surfaces' stiffness
   visit(v, "limit.dt", limit_.dt);
   visit(v, "limit.reason", limit_.reason);
   visit(v, "energy.kinetic", energy_.kinetic);

@@ -288,5 +288,52 @@ TEST(BuriedStructure, ParameterFileKeysAndLines) {
   }
 }
 
+// structure.interface = "slide": the box's concrete parts are detached from the soil along the
+// faces they share (front wall, floor and rear wall; the roof is the ground surface), and the
+// case carries the friction.
+TEST(BuriedStructure, SlideInterfaceDetachesTheBox) {
+  BuriedStructureSpec spec = paper_coarse();
+  const Model fused = read_case_text(buried_structure_case(spec, "test"), "fused.toml");
+  spec.slide_interface = true;
+  spec.interface_friction = 0.4;
+  const std::string text = buried_structure_case(spec, "test");
+  EXPECT_NE(text.find("[[slide_surfaces]]"), std::string::npos);
+  const Model model = read_case_text(text, "slide.toml");
+  ASSERT_EQ(model.slide_surfaces.size(), 1u);
+  const SlideSurface& slide = model.slide_surfaces[0];
+  EXPECT_DOUBLE_EQ(slide.friction, 0.4);
+  // The interface is the open line front wall - floor - rear wall (the roof is the ground): 1 m +
+  // 4 m + 1 m of faces, one node more than faces doubled.
+  ASSERT_EQ(slide.elements_a.size(), slide.elements_b.size());
+  double length = 0.0;
+  for (std::size_t k = 0; k < slide.elements_a.size(); ++k) {
+    const auto* c = model.mesh.coordinates.data();
+    const auto p = static_cast<std::size_t>(slide.faces_a[2 * k]), q = static_cast<std::size_t>(slide.faces_a[2 * k + 1]);
+    length += std::hypot(c[2 * q] - c[2 * p], c[2 * q + 1] - c[2 * p + 1]);
+    const bool on_box = (c[2 * p] == 6.0 && c[2 * q] == 6.0) || (c[2 * p] == 10.0 && c[2 * q] == 10.0) ||
+                        (c[2 * p + 1] == -1.0 && c[2 * q + 1] == -1.0);
+    EXPECT_TRUE(on_box) << c[2 * p] << ", " << c[2 * p + 1];
+  }
+  EXPECT_NEAR(length, 6.0, 1e-9);
+  EXPECT_EQ(model.mesh.node_count(), fused.mesh.node_count() + slide.elements_a.size() + 1);
+  EXPECT_EQ(model.mesh.element_count(), fused.mesh.element_count());
+  for (std::size_t k = 0; k < slide.elements_a.size(); ++k) {
+    const auto a = static_cast<std::size_t>(slide.elements_a[k]), b = static_cast<std::size_t>(slide.elements_b[k]);
+    EXPECT_EQ(model.parts[static_cast<std::size_t>(model.mesh.element_part[a])].name.rfind("concrete", 0), 0u);
+    EXPECT_EQ(model.parts[static_cast<std::size_t>(model.mesh.element_part[b])].name.rfind("soil", 0), 0u);
+  }
+  // A friction coefficient without a slide interface is refused, naming the key.
+  try {
+    read_buried_structure_params_text("[structure]\nfriction = 0.4\n", "p.toml");
+    ADD_FAILURE() << "accepted a friction on a fused interface";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "structure.friction");
+  }
+  const BuriedStructureSpec read =
+      read_buried_structure_params_text("[structure]\ninterface = \"slide\"\nfriction = 0.3\n", "p.toml");
+  EXPECT_TRUE(read.slide_interface);
+  EXPECT_DOUBLE_EQ(read.interface_friction, 0.3);
+}
+
 }  // namespace
 }  // namespace camouflet

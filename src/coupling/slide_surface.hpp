@@ -1,0 +1,105 @@
+#pragma once
+// Slide surfaces between FEM parts (Wang et al. 2005, section 4.13: the smooth soil-structure
+// interface that may separate, recontact and slide with Coulomb friction, where the paper's model
+// fuses the nodes). Node-to-surface penalty contact, symmetric: every node of each side is tested
+// against the faces of the other (the two passes of LS-DYNA's surface-to-surface contact, theory
+// manual, "Contact-impact algorithm"), so neither side is master.
+//
+// A node at signed distance g < 0 from the face it projects onto (the nearest face of the other
+// side within half that face's size; its outward normal n; a linear segment in 2-D, the two
+// triangles (0,1,2), (0,2,3) of a quad in 3-D) is pushed out with
+//   normal   F_n = k (-g) n,              k = penalty_scale m_eff / dt_stable^2
+//   friction F_t = -min(mu F_n, m_eff |v_t| / dt) v_t / |v_t|
+// m_eff the mass of the node-face pair along the normal (1/m_eff = 1/m_node + sum_a w_a^2 / m_a,
+// w_a the face nodes' weights at the foot), v_t the node's velocity relative to the face's at the
+// foot, tangential part. F acts on the node and -w_a F on the face's nodes, so momentum is
+// conserved exactly; the force vanishes for g >= 0, so the sides separate and recontact freely.
+//
+// The stiffness is a soft constraint (LS-DYNA's SOFT = 1): it scales with the step, so a pair's
+// own frequency is sqrt(penalty_scale) / dt per pass and the step needs no limit of its own. With
+// both passes on a pair and the element's own highest frequency 2 cfl / dt, the node stays stable
+// while (2 cfl)^2 + 2 penalty_scale < 4: the case reader refuses penalty_scale >= 2 (1 - cfl^2)
+// (1.28 at cfl 0.6). The default 0.3 lets the sides part about 4 steps late (10 at 0.1, 1 at 1.0;
+// two bars meeting, docs/theory/coupling.md). A pressure sigma across the interface sinks a node
+// by about (cfl^2 / penalty_scale) (sigma / (rho c^2)) h, h the element size: a fraction of h
+// while sigma stays well below the material's modulus rho c^2.
+//
+// In r-z the node masses and forces are both per radian, so the same law holds ring by ring.
+// Faces of eroded elements take no part. The contact holds no state between steps (the search is
+// redone each step), so a restart continues it exactly.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "model/model.hpp"
+
+namespace camouflet {
+
+template <int D>
+class SlideSurfaces {
+ public:
+  SlideSurfaces() = default;
+  // Throws InputError (at the surface's `where`) for a friction < 0, a penalty scale outside
+  // (0, 2 (1 - cfl^2)) or an interface without faces.
+  explicit SlideSurfaces(const Model& model);
+
+  bool empty() const { return surfaces_.empty(); }
+
+  // At t_n, after the element forces: adds the contact forces to f (n * D) from the positions x
+  // and velocities v (v(n-1/2)) of the nodes, their masses m and the element erosion flags.
+  // dt: the impulse span (t_(n+1/2) - t_(n-1/2)); dt_stable: the step the packages' stability
+  // vote gave, which sets the stiffness (a step cut short to land on an output or the end time
+  // must not stiffen the spring: its force would kick the nodes by s |g| / dt).
+  void apply(const double* x, const double* v, const double* m, const std::vector<char>& eroded, double* f,
+             double dt, double dt_stable);
+
+  // After the kick and the node constraints (v(n+1/2)): the work of the last apply's forces over
+  // dt (J), on the mean of the relative velocities before and after, as the central difference
+  // changes the kinetic energy: the work of the normal springs (given back on separation) and of
+  // friction (lost).
+  double settle(const double* v, double dt) const;
+
+  // Of the last apply: the number of node-face pairs in contact and the deepest penetration (m).
+  std::size_t pairs() const { return pairs_; }
+  double deepest() const { return deepest_; }
+
+ private:
+  static constexpr int F = D == 2 ? 2 : 4;  // nodes per face
+  struct Side {
+    std::vector<std::int64_t> faces;     // F nodes per face
+    std::vector<std::int64_t> elements;  // the element each face bounds
+    std::vector<std::int64_t> nodes;     // every node of the faces, once
+  };
+  struct Surface {
+    Side a, b;
+    double friction = 0.0;
+    double penalty_scale = 0.3;
+  };
+  // The nodes of `nodes` against the faces of `faces`.
+  void pass(const Surface& s, const Side& nodes, const Side& faces, const double* x, const double* v,
+            const double* m, const std::vector<char>& eroded, double* f, double dt, double dt_stable);
+
+  // A node-face pair in contact at the last apply: the node, the face nodes at the foot with
+  // their weights, the force on the node (N) and its power on v(n-1/2) (W).
+  struct Pair {
+    std::int64_t node = 0;
+    int count = 0;
+    std::array<std::int64_t, 3> on{};
+    std::array<double, 3> weight{};
+    Vec<D> force{};
+    double power_before = 0.0;
+  };
+  // The relative velocity of a pair's node to its foot on the face.
+  Vec<D> relative_velocity(const Pair& pair, const double* v) const;
+
+  std::vector<Surface> surfaces_;
+  std::vector<Pair> contacts_;
+  std::size_t pairs_ = 0;
+  double deepest_ = 0.0;
+};
+
+extern template class SlideSurfaces<2>;
+extern template class SlideSurfaces<3>;
+
+}  // namespace camouflet

@@ -55,6 +55,19 @@ inline Model block_model(GeometryMode mode, const std::vector<BlockSpec>& blocks
   return model;
 }
 
+// An empty model of `mode` that runs `cycles` cycles at the fixed step `dt` (s; the end time far
+// off) without hourglass control: the viscosity tests' set-up, their material and mesh to add.
+inline Model fixed_step_model(GeometryMode mode, double dt, std::int64_t cycles) {
+  Model model;
+  model.run.mode = mode;
+  model.mesh.dimension = dimension_of(mode);
+  model.run.end_time = 1.0;
+  model.run.max_cycles = cycles;
+  model.run.initial_dt = model.run.max_dt = dt;
+  model.run.hourglass = HourglassForm::none;
+  return model;
+}
+
 inline BoundaryCondition symmetry(const std::string& set, std::array<double, 3> normal) {
   BoundaryCondition bc;
   bc.kind = BoundaryKind::symmetry;

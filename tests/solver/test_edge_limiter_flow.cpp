@@ -27,13 +27,7 @@ constexpr int cycles = 20;
 // The viscous heat (J/m) after `cycles` fixed steps.
 double shear_heat(bool limiter) {
   test::use_threads(1);
-  Model model;
-  model.run.mode = GeometryMode::plane_strain;
-  model.mesh.dimension = 2;
-  model.run.end_time = 1.0;
-  model.run.max_cycles = cycles;
-  model.run.initial_dt = model.run.max_dt = dt;
-  model.run.hourglass = HourglassForm::none;
+  Model model = test::fixed_step_model(GeometryMode::plane_strain, dt, cycles);
   model.run.viscosity_form = ViscosityForm::edge;
   model.run.viscosity_limiter = limiter;
   model.materials.push_back({"gas", test::ideal_gas("gas", 1.0, 1.4, 1e-10), {}});  // c ~ 1e-5 m/s

@@ -46,14 +46,8 @@ void add_box(Model& model, const std::string& name, double r0, int index) {
 std::vector<double> stirred(const std::vector<double>& corners, const Settings& run, const Settings& own,
                             const std::vector<bool>& own_parts) {
   test::use_threads(1);
-  Model model;
-  model.run.mode = GeometryMode::axisymmetric;
-  model.mesh.dimension = 2;
-  model.run.end_time = 1.0;
-  model.run.max_cycles = cycles;
-  model.run.initial_dt = model.run.max_dt = 5e-3;  // s; the CFL step is ~0.04 s
+  Model model = test::fixed_step_model(GeometryMode::axisymmetric, 5e-3, cycles);  // s; the CFL step is ~0.04 s
   model.run.area_weighted_momentum = true;
-  model.run.hourglass = HourglassForm::none;
   model.run.subzonal_pressure = run.subzonal;
   model.run.viscosity_form = run.form;
   model.materials.push_back({"gas", test::ideal_gas("gas", 1.0, 1.4, 2.5), {}});  // p = 1 Pa, c = 1.18 m/s

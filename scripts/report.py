@@ -84,6 +84,13 @@ def main():
     standoff = gen.get("standoff_m", 6.0)
     length = gen.get("box_length_m", 4.0)
     height = gen.get("box_height_m", 1.0)
+    # The soil-structure interface (structure.interface of the generator; fused unless the line says).
+    if gen.get("structure_kind") == "free_field" or not gen:
+        interface = ""
+    elif gen.get("interface") == "slide":
+        interface = f", soil–structure interface sliding (Coulomb friction {gen.get('friction', 0.0):g})"
+    else:
+        interface = ", soil–structure interface fused (shared nodes)"
     w3 = W ** (1.0 / 3.0)
     figdir = os.path.join(out, "report")
     os.makedirs(figdir, exist_ok=True)
@@ -425,8 +432,8 @@ def main():
               f"(end time {summary.get('end_time_s', 0) * 1e3:.1f} ms) after {summary.get('cycles')} cycles, "
               f"{summary.get('wall_seconds', 0):.0f} s wall time")
     body = [f"<h1>{html.escape(summary.get('title') or 'Camouflet run')}</h1>",
-            f"<p>{W:g} kg TNT at {d:g} m depth; structure {standoff:g} – {standoff + length:g} m from the axis. "
-            f"Run: {status}.</p>"]
+            f"<p>{W:g} kg TNT at {d:g} m depth; structure {standoff:g} – {standoff + length:g} m from the axis"
+            f"{interface}. Run: {status}.</p>"]
     if summary.get("failed"):
         body.append("<p><b>The run stopped early (numerical failure): the figures show the time simulated.</b></p>")
     for b in blocks:

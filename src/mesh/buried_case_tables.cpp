@@ -13,6 +13,11 @@
 
 namespace camouflet::buried_detail {
 
+std::string generator_interface(const BuriedStructureSpec& s) {
+  if (!s.slide_interface || s.free_field) return "";
+  return fmt::format(" interface=slide friction={}", s.interface_friction);
+}
+
 void write_slide_interface(const BuriedStructureSpec& s, const std::vector<std::string>& box_parts, std::string& b) {
   if (!s.slide_interface || s.free_field || box_parts.empty()) return;
   auto out = std::back_inserter(b);

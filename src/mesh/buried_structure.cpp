@@ -222,9 +222,9 @@ std::string buried_structure_case(const BuriedStructureSpec& s, const std::strin
   fmt::format_to(
       out,
       "# generator: charge_mass_kg={} burst_depth_m={} standoff_m={} box_length_m={} box_height_m={} "
-      "wall_thickness_m={} top_depth_m={}{}\n#\n",
+      "wall_thickness_m={} top_depth_m={}{}{}\n#\n",
       s.charge_mass, s.burst_depth, s.standoff, s.box_length, s.box_height, s.wall_thickness, s.top_depth,
-      s.free_field ? " structure_kind=free_field" : "");
+      s.free_field ? " structure_kind=free_field" : "", buried_detail::generator_interface(s));
   if (!has_sph_zone(s))
     b +=
         "# No SPH zone (sph.radius = 0): the charge (JWL elements, programmed burn) and the near field are\n"

@@ -193,9 +193,9 @@ void write_header(const BuriedStructureSpec& s, const BuriedStructureLayout& L, 
   fmt::format_to(
       out,
       "# generator: charge_mass_kg={} burst_depth_m={} standoff_m={} box_length_m={} box_height_m={} "
-      "wall_thickness_m={} top_depth_m={} box_width_m={} three_d=1{}\n#\n",
+      "wall_thickness_m={} top_depth_m={} box_width_m={} three_d=1{}{}\n#\n",
       s.charge_mass, s.burst_depth, s.standoff, s.box_length, s.box_height, s.wall_thickness, s.top_depth,
-      s.box_width, s.free_field ? " structure_kind=free_field" : "");
+      s.box_width, s.free_field ? " structure_kind=free_field" : "", generator_interface(s));
   if (has_sph_zone(s))
     b += "# Ejecta: no domain box is set; particles thrown above the ground fly on, none is removed.\n";
   else

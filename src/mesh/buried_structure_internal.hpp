@@ -53,6 +53,9 @@ std::string part_hourglass(const BuriedStructureSpec& s, const std::string& mate
 // `geostatic = { ... }` line of a FEM part of `material`: soil under gravity; empty otherwise.
 std::string part_geostatic(const BuriedStructureSpec& s, const std::string& material);
 
+// The generator line's interface keys (" interface=slide friction=MU" for a slide interface on a
+// box, empty otherwise): the report names the interface from them.
+std::string generator_interface(const BuriedStructureSpec& s);
 // The [[slide_surfaces]] block that detaches the box's parts `box_parts` from the soil
 // (structure.interface = "slide"), with its comment; nothing for a fused interface or a free field.
 void write_slide_interface(const BuriedStructureSpec& s, const std::vector<std::string>& box_parts, std::string& b);

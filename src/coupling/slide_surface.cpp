@@ -52,14 +52,14 @@ SlideSurfaces<D>::SlideSurfaces(const Model& model) {
 
 template <int D>
 void SlideSurfaces<D>::apply(const double* x, const double* v, const double* m, const std::vector<char>& eroded,
-                             double* f, double dt, double dt_stable) {
+                             double* f, double dt_stable) {
   pairs_ = 0;
   deepest_ = 0.0;
   contacts_.clear();
-  if (!(dt > 0.0) || !(dt_stable > 0.0)) return;
+  if (!(dt_stable > 0.0)) return;
   for (const Surface& s : surfaces_) {
-    pass(s, s.b, s.a, x, v, m, eroded, f, dt, dt_stable);
-    pass(s, s.a, s.b, x, v, m, eroded, f, dt, dt_stable);
+    pass(s, s.b, s.a, x, v, m, eroded, f, dt_stable);
+    pass(s, s.a, s.b, x, v, m, eroded, f, dt_stable);
   }
 }
 
@@ -74,17 +74,38 @@ Vec<D> SlideSurfaces<D>::relative_velocity(const Pair& pair, const double* v) co
 }
 
 template <int D>
+void SlideSurfaces<D>::apply_friction(double* v, const double* m, double dt) {
+  if (!(dt > 0.0)) return;
+  for (Pair& pair : contacts_) {
+    if (!(pair.friction > 0.0)) continue;
+    const Vec<D> v_rel = relative_velocity(pair, v);
+    const Vec<D> v_t = v_rel - pair.normal * dot(v_rel, pair.normal);
+    const double vt = std::sqrt(dot(v_t, v_t));
+    if (!(vt > 0.0)) continue;
+    const double fn = dot(pair.force, pair.normal);
+    const double impulse = std::min(pair.friction * fn * dt, pair.m_eff * vt);
+    const Vec<D> j = v_t * (-impulse / vt);  // on the node; -w_a j on the face nodes
+    for (int d = 0; d < D; ++d) v[pair.node * D + d] += j[d] / m[pair.node];
+    for (int a = 0; a < pair.count; ++a) {
+      const std::int64_t n = pair.on[static_cast<std::size_t>(a)];
+      for (int d = 0; d < D; ++d) v[n * D + d] -= pair.weight[static_cast<std::size_t>(a)] * j[d] / m[n];
+    }
+    pair.force += j * (1.0 / dt);  // booked with the spring's force in settle()
+  }
+}
+
+template <int D>
 double SlideSurfaces<D>::settle(const double* v, double dt) const {
   double work = 0.0;
   for (const Pair& pair : contacts_)
-    work += 0.5 * (pair.power_before + dot(pair.force, relative_velocity(pair, v))) * dt;
+    work += 0.5 * (dot(pair.force, pair.v_rel_before) + dot(pair.force, relative_velocity(pair, v))) * dt;
   return work;
 }
 
 template <int D>
 void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& faces, const double* x,
                               const double* v, const double* m, const std::vector<char>& eroded, double* f,
-                              double dt, double dt_stable) {
+                              double dt_stable) {
   auto point = [&](std::int64_t n) {
     Vec<D> p;
     for (int i = 0; i < D; ++i) p[i] = x[n * D + i];
@@ -198,18 +219,13 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
     }
     const double m_eff = 1.0 / inverse;
     const double fn = s.penalty_scale * m_eff / (dt_stable * dt_stable) * (-gap);
-    Pair pair{node, count, on, weight, {}, 0.0};
-    const Vec<D> v_rel = relative_velocity(pair, v);
-    const Vec<D> v_t = v_rel - normal * dot(v_rel, normal);
-    const double vt = std::sqrt(dot(v_t, v_t));
-    Vec<D> force = normal * fn;
-    if (s.friction > 0.0 && vt > 0.0) force -= v_t * (std::min(s.friction * fn, m_eff * vt / dt) / vt);
+    Pair pair{node, count, on, weight, normal, m_eff, s.friction, normal * fn, {}};
+    pair.v_rel_before = relative_velocity(pair, v);
+    const Vec<D> force = pair.force;
     for (int d = 0; d < D; ++d) f[node * D + d] += force[d];
     for (int a = 0; a < count; ++a)
       for (int d = 0; d < D; ++d)
         f[on[static_cast<std::size_t>(a)] * D + d] -= weight[static_cast<std::size_t>(a)] * force[d];
-    pair.force = force;
-    pair.power_before = dot(force, v_rel);
     contacts_.push_back(pair);
     ++pairs_;
     deepest_ = std::max(deepest_, -gap);

@@ -9,11 +9,17 @@
 // side within half that face's size; its outward normal n; a linear segment in 2-D, the two
 // triangles (0,1,2), (0,2,3) of a quad in 3-D) is pushed out with
 //   normal   F_n = k (-g) n,              k = penalty_scale m_eff / dt_stable^2
-//   friction F_t = -min(mu F_n, m_eff |v_t| / dt) v_t / |v_t|
-// m_eff the mass of the node-face pair along the normal (1/m_eff = 1/m_node + sum_a w_a^2 / m_a,
-// w_a the face nodes' weights at the foot), v_t the node's velocity relative to the face's at the
-// foot, tangential part. F acts on the node and -w_a F on the face's nodes, so momentum is
+// m_eff the mass of the node-face pair (1/m_eff = 1/m_node + sum_a w_a^2 / m_a, w_a the face
+// nodes' weights at the foot). F acts on the node and -w_a F on the face's nodes, so momentum is
 // conserved exactly; the force vanishes for g >= 0, so the sides separate and recontact freely.
+// Friction acts on the velocities after the kick, pair after pair (a projected Gauss-Seidel
+// sweep): the impulse along the pair's tangential relative velocity v_t,
+//   J = min(mu F_n dt, m_eff |v_t|),
+// stops the sliding within the step when the Coulomb bound allows (sticking) and is the Coulomb
+// force over the step when it does not. Each impulse only takes kinetic energy out of the pair's
+// relative motion, so the sweep cannot overshoot however many pairs share a node (a force-level
+// stick bound, m_eff |v_t| / dt per pair, reverses the relative motion when the two passes or
+// neighbouring pairs act on the same nodes, and grows: coarse3d with mu 0.4 blew up at 14.5 ms).
 //
 // The stiffness is a soft constraint (LS-DYNA's SOFT = 1): it scales with the step, so a pair's
 // own frequency is sqrt(penalty_scale) / dt per pass and the step needs no limit of its own. With
@@ -48,11 +54,15 @@ class SlideSurfaces {
 
   // At t_n, after the element forces: adds the contact forces to f (n * D) from the positions x
   // and velocities v (v(n-1/2)) of the nodes, their masses m and the element erosion flags.
-  // dt: the impulse span (t_(n+1/2) - t_(n-1/2)); dt_stable: the step the packages' stability
-  // vote gave, which sets the stiffness (a step cut short to land on an output or the end time
-  // must not stiffen the spring: its force would kick the nodes by s |g| / dt).
+  // dt_stable: the step the packages' stability vote gave, which sets the stiffness (a step cut
+  // short to land on an output or the end time must not stiffen the spring: its force would kick
+  // the nodes by penalty_scale |g| / dt).
   void apply(const double* x, const double* v, const double* m, const std::vector<char>& eroded, double* f,
-             double dt, double dt_stable);
+             double dt_stable);
+
+  // After the kick, before the node constraints: the friction impulses of the last apply's pairs
+  // on the velocities v (v(n+1/2), n * D) of nodes of masses m, over the impulse span dt.
+  void apply_friction(double* v, const double* m, double dt);
 
   // After the kick and the node constraints (v(n+1/2)): the work of the last apply's forces over
   // dt (J), on the mean of the relative velocities before and after, as the central difference
@@ -78,17 +88,22 @@ class SlideSurfaces {
   };
   // The nodes of `nodes` against the faces of `faces`.
   void pass(const Surface& s, const Side& nodes, const Side& faces, const double* x, const double* v,
-            const double* m, const std::vector<char>& eroded, double* f, double dt, double dt_stable);
+            const double* m, const std::vector<char>& eroded, double* f, double dt_stable);
 
   // A node-face pair in contact at the last apply: the node, the face nodes at the foot with
-  // their weights, the force on the node (N) and its power on v(n-1/2) (W).
+  // their weights, the face's outward normal, the pair's mass, its friction coefficient, the
+  // force on the node (N: the spring's, then with the friction impulse over the step) and the
+  // node's velocity relative to the foot at v(n-1/2).
   struct Pair {
     std::int64_t node = 0;
     int count = 0;
     std::array<std::int64_t, 3> on{};
     std::array<double, 3> weight{};
+    Vec<D> normal{};
+    double m_eff = 0.0;
+    double friction = 0.0;
     Vec<D> force{};
-    double power_before = 0.0;
+    Vec<D> v_rel_before{};
   };
   // The relative velocity of a pair's node to its foot on the face.
   Vec<D> relative_velocity(const Pair& pair, const double* v) const;

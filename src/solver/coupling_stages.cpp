@@ -10,7 +10,7 @@ void Solver<D>::add_coupling_forces() {
   if (coupling_) coupling_->add_forces(centred_step());  // join reactions, contact (coupling/)
   if (!slides_.empty())  // FEM-FEM slide surfaces, on v(n-1/2)
     slides_.apply(fem_.position.data(), fem_.velocity.data(), fem_.node_mass.data(), fem_.elements.eroded,
-                  fem_.force.data(), centred_step(), dt_stable_);
+                  fem_.force.data(), dt_stable_);
 }
 
 template <int D>

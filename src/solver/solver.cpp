@@ -107,6 +107,8 @@ void Solver<D>::constrain_velocities() {
   const double dt_mean = centred_step();
   if (relaxing_)  // the charges' nodes and particles held still (dynamic_relaxation.cpp)
     for (Package<D>* package : packages_) package->hold_still(relaxation_held_materials_);
+  // The slide surfaces' friction, as impulses on v(n+1/2), before the constraints act on them.
+  if (!slides_.empty()) slides_.apply_friction(fem_.velocity.data(), fem_.node_mass.data(), dt_mean);
   // Dashpots, then fixed, prescribed, symmetry and axis nodes (boundary/boundaries.hpp).
   const typename Boundaries<D>::Work work = boundaries_.constrain(fem_, time_ + 0.5 * dt_next_, dt_, dt_mean, relaxing_);
   energy_.boundary_work += work.transmitting;

@@ -206,7 +206,7 @@ BarImpact bar_impact(GeometryMode mode) {
     solver.step();
     scratch.assign(solver.position().size(), 0.0);
     probe.apply(solver.position().data(), solver.velocity().data(), solver.node_mass().data(),
-                solver.elements().eroded, scratch.data(), solver.next_dt(), solver.next_dt());
+                solver.elements().eroded, scratch.data(), solver.next_dt());
     if (probe.pairs() > 0) r.contact_time = solver.time();
   }
   r.energy_ratio = (solver.energy().kinetic + solver.energy().internal + solver.energy().hourglass) / initial;

@@ -110,9 +110,8 @@ TEST(SlideSurface, BlockSlidesDownAPlaneAtTheRigidBodyAcceleration) {
 }
 
 TEST(SlideSurface, BlockStaysOnAPlaneFlatterThanItsFrictionAngle) {
-  // tan 10 deg = 0.18 < mu = 0.3: static friction holds the block. What it may still do is creep
-  // by the force-level friction's lag (the tangential force needs a relative speed of about
-  // F dt / m_eff to build up): held to 1 % of the frictionless block's acceleration.
+  // tan 10 deg = 0.18 < mu = 0.3: static friction holds the block; its centre moves only by its
+  // elastic vibration on the contact. Held to 1 % of the frictionless block's acceleration.
   const double free = g * std::sin(10.0 * std::numbers::pi / 180.0);
   test::verify({"Slide surface, block on a plane at 10 deg, mu = 0.3, plane strain: acceleration / frictionless",
                 "0 (at rest: tan theta < mu)", 0.0, slide_acceleration<2>(10.0, 0.3, 0.1) / free, 0.01, false, "-"});

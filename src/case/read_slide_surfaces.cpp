@@ -23,13 +23,15 @@ void read_slide_surfaces(TomlReader& root, Model& model) {
         if (model.parts[k].name == name) index = static_cast<int>(k);
       if (index < 0) {
         const std::string guess = nearest(name, fem_parts);
-        t.fail("parts", guess.empty() ? fmt::format("no FEM part '{}' is defined", name)
-                                      : fmt::format("no FEM part '{}' is defined; did you mean '{}'?", name, guess));
+        t.fail("parts", guess.empty()
+                            ? fmt::format("no FEM part '{}' is defined", name)
+                            : fmt::format("no FEM part '{}' is defined; did you mean '{}'?", name, guess));
       }
       if (model.parts[static_cast<std::size_t>(index)].kind != PartKind::fem)
-        t.fail("parts", fmt::format("part '{}' is an SPH part: a slide surface detaches FEM parts (an SPH part "
-                                    "slides on FEM faces through [[contacts]])",
-                                    name));
+        t.fail("parts",
+               fmt::format("part '{}' is an SPH part: a slide surface detaches FEM parts (an SPH part "
+                           "slides on FEM faces through [[contacts]])",
+                           name));
       in_group[static_cast<std::size_t>(index)] = 1;
       surface.parts.push_back(index);
     }
@@ -44,7 +46,8 @@ void read_slide_surfaces(TomlReader& root, Model& model) {
     t.finish();
     DetachedInterface detached = detach_parts(model.mesh, in_group);
     if (detached.a.empty())
-      t.fail("parts", "these parts share no face with the other FEM parts: there is nothing for them to slide on");
+      t.fail("parts",
+             "these parts share no face with the other FEM parts: there is nothing for them to slide on");
     for (const ElementFace& f : detached.a) surface.elements_a.push_back(f.element);
     for (const ElementFace& f : detached.b) surface.elements_b.push_back(f.element);
     detached_all.push_back(std::move(detached));

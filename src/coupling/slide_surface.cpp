@@ -35,9 +35,10 @@ SlideSurfaces<D>::SlideSurfaces(const Model& model) {
   for (const SlideSurface& s : model.slide_surfaces) {
     if (!(s.friction >= 0.0)) throw InputError(s.where, "friction: must be >= 0");
     if (!(s.penalty_scale > 0.0 && s.penalty_scale < 2.0 * (1.0 - model.run.cfl * model.run.cfl)))
-      throw InputError(s.where, fmt::format("penalty_scale: must lie in (0, 2 (1 - cfl^2)) = (0, {:.3g}) for a "
-                                            "stable contact at cfl {}",
-                                            2.0 * (1.0 - model.run.cfl * model.run.cfl), model.run.cfl));
+      throw InputError(s.where,
+                       fmt::format("penalty_scale: must lie in (0, 2 (1 - cfl^2)) = (0, {:.3g}) for a "
+                                   "stable contact at cfl {}",
+                                   2.0 * (1.0 - model.run.cfl * model.run.cfl), model.run.cfl));
     if (s.faces_a.empty() || s.faces_a.size() != s.faces_b.size() ||
         s.faces_a.size() != F * s.elements_a.size() || s.faces_b.size() != F * s.elements_b.size())
       throw InputError(s.where, "parts: the slide surface has no faces between its two sides");
@@ -51,8 +52,8 @@ SlideSurfaces<D>::SlideSurfaces(const Model& model) {
 }
 
 template <int D>
-void SlideSurfaces<D>::apply(const double* x, const double* v, const double* m, const std::vector<char>& eroded,
-                             double* f, double dt_stable) {
+void SlideSurfaces<D>::apply(const double* x, const double* v, const double* m,
+                             const std::vector<char>& eroded, double* f, double dt_stable) {
   pairs_ = 0;
   deepest_ = 0.0;
   contacts_.clear();
@@ -104,14 +105,16 @@ double SlideSurfaces<D>::settle(const double* v, double dt) const {
 
 template <int D>
 void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& faces, const double* x,
-                              const double* v, const double* m, const std::vector<char>& eroded, double* f,
-                              double dt_stable) {
+                            const double* v, const double* m, const std::vector<char>& eroded, double* f,
+                            double dt_stable) {
   auto point = [&](std::int64_t n) {
     Vec<D> p;
     for (int i = 0; i < D; ++i) p[i] = x[n * D + i];
     return p;
   };
-  auto live = [&](std::int64_t e) { return static_cast<std::size_t>(e) >= eroded.size() || !eroded[static_cast<std::size_t>(e)]; };
+  auto live = [&](std::int64_t e) {
+    return static_cast<std::size_t>(e) >= eroded.size() || !eroded[static_cast<std::size_t>(e)];
+  };
   const std::size_t face_count = faces.elements.size();
 
   // Bucket search: each face's box, grown by its capture depth (half its size), into the cells of
@@ -189,7 +192,8 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
         if (xi < -seam_tolerance || xi > 1.0 + seam_tolerance || std::abs(g) > capture[k]) continue;
         if (std::abs(g) < best) {
           const double w = std::clamp(xi, 0.0, 1.0);
-          best = std::abs(g), gap = g, count = 2, normal = n, on = {q[0], q[1], 0}, weight = {1.0 - w, w, 0.0};
+          best = std::abs(g), gap = g, count = 2, normal = n, on = {q[0], q[1], 0},
+          weight = {1.0 - w, w, 0.0};
         }
       } else {
         const Vec<3> corner[4] = {point(q[0]), point(q[1]), point(q[2]), point(q[3])};

@@ -65,7 +65,8 @@ DetachedInterface detach_parts(FemMesh& mesh, const std::vector<char>& in_group)
   std::vector<char> used_a(nodes, 0), used_b(nodes, 0);
   for (std::size_t e = 0; e < elements; ++e)
     for (int a = 0; a < npe; ++a) {
-      const auto n = static_cast<std::size_t>(mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(a)]);
+      const auto n = static_cast<std::size_t>(
+          mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(a)]);
       (group(e) ? used_a : used_b)[n] = 1;
     }
   std::vector<std::int64_t> copy(nodes, -1);
@@ -83,7 +84,8 @@ DetachedInterface detach_parts(FemMesh& mesh, const std::vector<char>& in_group)
   std::map<Key, std::vector<Owner>> owners;
   auto face_nodes = [&](std::size_t e, int f, std::int64_t* q) {
     for (int a = 0; a < table.nodes; ++a)
-      q[a] = mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(table.local(f, a))];
+      q[a] =
+          mesh.connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(table.local(f, a))];
   };
   for (std::size_t e = 0; e < elements; ++e)
     for (int f = 0; f < table.faces; ++f) {

@@ -40,8 +40,10 @@ std::string vec(std::initializer_list<double> v) {
 
 std::string block(const std::string& name, const std::string& origin, const std::string& size,
                   const std::string& cells, const std::string& extra = "") {
-  return fmt::format("[[parts]]\nname = \"{}\"\nmaterial = \"solid\"\n{}block = {{ origin = {}, size = {}, cells = {} }}\n\n",
-                     name, extra, origin, size, cells);
+  return fmt::format(
+      "[[parts]]\nname = \"{}\"\nmaterial = \"solid\"\n{}block = {{ origin = {}, size = {}, cells = {} "
+      "}}\n\n",
+      name, extra, origin, size, cells);
 }
 
 std::string boundary(const std::string& type, const std::string& set, const std::string& extra = "") {
@@ -57,7 +59,7 @@ double centre(const Solver<D>& solver, const Model& model, int part, int i) {
     if (mesh.element_part[e] == part)
       for (int a = 0; a < mesh.nodes_per_element; ++a)
         on[static_cast<std::size_t>(mesh.connectivity[e * static_cast<std::size_t>(mesh.nodes_per_element) +
-                                                       static_cast<std::size_t>(a)])] = 1;
+                                                      static_cast<std::size_t>(a)])] = 1;
   double mx = 0.0, m = 0.0;
   for (std::size_t n = 0; n < solver.node_count(); ++n)
     if (on[n]) {
@@ -100,9 +102,10 @@ double slide_acceleration(double theta_deg, double mu, double duration) {
 TEST(SlideSurface, BlockSlidesDownAPlaneAtTheRigidBodyAcceleration) {
   for (const double mu : {0.0, 0.3}) {
     const double expected = g * (std::sin(std::numbers::pi / 6.0) - mu * std::cos(std::numbers::pi / 6.0));
-    test::verify({fmt::format("Slide surface, block on a plane at 30 deg, mu = {}, plane strain: acceleration", mu),
-                  "g (sin theta - mu cos theta) (rigid body)", expected, slide_acceleration<2>(30.0, mu, 0.1),
-                  0.01, true, "m/s^2"});
+    test::verify(
+        {fmt::format("Slide surface, block on a plane at 30 deg, mu = {}, plane strain: acceleration", mu),
+         "g (sin theta - mu cos theta) (rigid body)", expected, slide_acceleration<2>(30.0, mu, 0.1), 0.01,
+         true, "m/s^2"});
     test::verify({fmt::format("Slide surface, block on a plane at 30 deg, mu = {}, 3-D: acceleration", mu),
                   "g (sin theta - mu cos theta) (rigid body)", expected, slide_acceleration<3>(30.0, mu, 0.1),
                   0.01, true, "m/s^2"});
@@ -113,10 +116,12 @@ TEST(SlideSurface, BlockStaysOnAPlaneFlatterThanItsFrictionAngle) {
   // tan 10 deg = 0.18 < mu = 0.3: static friction holds the block; its centre moves only by its
   // elastic vibration on the contact. Held to 1 % of the frictionless block's acceleration.
   const double free = g * std::sin(10.0 * std::numbers::pi / 180.0);
-  test::verify({"Slide surface, block on a plane at 10 deg, mu = 0.3, plane strain: acceleration / frictionless",
-                "0 (at rest: tan theta < mu)", 0.0, slide_acceleration<2>(10.0, 0.3, 0.1) / free, 0.01, false, "-"});
+  test::verify(
+      {"Slide surface, block on a plane at 10 deg, mu = 0.3, plane strain: acceleration / frictionless",
+       "0 (at rest: tan theta < mu)", 0.0, slide_acceleration<2>(10.0, 0.3, 0.1) / free, 0.01, false, "-"});
   test::verify({"Slide surface, block on a plane at 10 deg, mu = 0.3, 3-D: acceleration / frictionless",
-                "0 (at rest: tan theta < mu)", 0.0, slide_acceleration<3>(10.0, 0.3, 0.1) / free, 0.01, false, "-"});
+                "0 (at rest: tan theta < mu)", 0.0, slide_acceleration<3>(10.0, 0.3, 0.1) / free, 0.01, false,
+                "-"});
 }
 
 TEST(SlideSurface, AStepCutShortDoesNotKickTheContact) {
@@ -143,15 +148,16 @@ TEST(SlideSurface, AStepCutShortDoesNotKickTheContact) {
   solver.limit_next_step(1e-4 * solver.next_dt());
   solver.step();
   solver.step();
-  test::verify({"Slide surface, block at rest, a step cut to 1e-4 of the stable one: fastest node's speed change",
-                "0 (the spring follows the stable step)", 0.0, std::abs(fastest() - before), 1e-3, false, "m/s"});
+  test::verify(
+      {"Slide surface, block at rest, a step cut to 1e-4 of the stable one: fastest node's speed change",
+       "0 (the spring follows the stable step)", 0.0, std::abs(fastest() - before), 1e-3, false, "m/s"});
 }
 
 struct BarImpact {
-  double contact_time = 0.0;    // s, the last time a pair was in contact
-  double expected_time = 0.0;   // s, 2 L / c
-  double energy_ratio = 0.0;    // (kinetic + internal) after separation / initial kinetic
-  double struck_velocity = 0.0; // m/s, the struck bar's mean velocity at the end
+  double contact_time = 0.0;     // s, the last time a pair was in contact
+  double expected_time = 0.0;    // s, 2 L / c
+  double energy_ratio = 0.0;     // (kinetic + internal) after separation / initial kinetic
+  double struck_velocity = 0.0;  // m/s, the struck bar's mean velocity at the end
   double striker_velocity = 0.0;
   double balance_error = 0.0;
 };
@@ -169,12 +175,16 @@ BarImpact bar_impact(GeometryMode mode) {
   const double end = 1.3 * expected;
   const bool rz = mode == GeometryMode::axisymmetric;
   std::string c = fmt::format("[run]\ngeometry = \"{}\"\nend_time = {}\ncfl = 0.6\n\n",
-                              rz ? "axisymmetric" : D == 2 ? "plane_strain" : "3d", end);
+                              rz       ? "axisymmetric"
+                              : D == 2 ? "plane_strain"
+                                       : "3d",
+                              end);
   c += solid_material();
-  const std::string cells = D == 2 ? (rz ? fmt::format("[1, {}]", N) : fmt::format("[{}, 1]", N))
-                                   : fmt::format("[{}, 1, 1]", N);
+  const std::string cells =
+      D == 2 ? (rz ? fmt::format("[1, {}]", N) : fmt::format("[{}, 1]", N)) : fmt::format("[{}, 1, 1]", N);
   if (rz) {
-    c += block("striker", vec({0.0, -L}), vec({h, L}), cells, fmt::format("initial_velocity = {}\n", vec({0.0, v0})));
+    c += block("striker", vec({0.0, -L}), vec({h, L}), cells,
+               fmt::format("initial_velocity = {}\n", vec({0.0, v0})));
     c += block("struck", vec({0.0, 0.0}), vec({h, L}), cells);
     for (const char* part : {"striker", "struck"}) {
       c += boundary("axis", fmt::format("{}.xmin", part));
@@ -189,8 +199,9 @@ BarImpact bar_impact(GeometryMode mode) {
       for (int axis = 1; axis < D; ++axis)
         for (const char* side : {"min", "max"})
           c += boundary("symmetry", fmt::format("{}.{}{}", part, "xyz"[axis], side),
-                        fmt::format("normal = {}\n", D == 2 ? vec({0.0, 1.0}) : (axis == 1 ? vec({0.0, 1.0, 0.0})
-                                                                                         : vec({0.0, 0.0, 1.0}))));
+                        fmt::format("normal = {}\n",
+                                    D == 2 ? vec({0.0, 1.0})
+                                           : (axis == 1 ? vec({0.0, 1.0, 0.0}) : vec({0.0, 0.0, 1.0}))));
   }
   c += "[[slide_surfaces]]\nparts = [\"struck\"]\n";  // the default penalty scale
   const Model model = read_case_text(c, "bars.toml");
@@ -217,7 +228,7 @@ BarImpact bar_impact(GeometryMode mode) {
   for (std::size_t e = 0; e < mesh.element_count(); ++e)
     for (int a = 0; a < mesh.nodes_per_element; ++a)
       side[static_cast<std::size_t>(mesh.connectivity[e * static_cast<std::size_t>(mesh.nodes_per_element) +
-                                                       static_cast<std::size_t>(a)])] = mesh.element_part[e];
+                                                      static_cast<std::size_t>(a)])] = mesh.element_part[e];
   for (std::size_t n = 0; n < solver.node_count(); ++n) {
     const double m = solver.node_mass()[n], v = solver.velocity()[n * D + static_cast<std::size_t>(along)];
     (side[n] == 1 ? m1 : m0) += m;
@@ -225,10 +236,13 @@ BarImpact bar_impact(GeometryMode mode) {
   }
   r.struck_velocity = p1 / m1;
   r.striker_velocity = p0 / m0;
-  fmt::print("bars {}: contact until {:.5g} s (2L/c {:.5g}), energy ratio {:.5f}, struck {:.4f} m/s, striker {:.4f} "
-             "m/s, balance {:.2e}\n",
-             rz ? "r-z" : D == 2 ? "plane strain" : "3-D", r.contact_time, expected, r.energy_ratio,
-             r.struck_velocity, r.striker_velocity, r.balance_error);
+  fmt::print(
+      "bars {}: contact until {:.5g} s (2L/c {:.5g}), energy ratio {:.5f}, struck {:.4f} m/s, striker {:.4f} "
+      "m/s, balance {:.2e}\n",
+      rz       ? "r-z"
+      : D == 2 ? "plane strain"
+               : "3-D",
+      r.contact_time, expected, r.energy_ratio, r.struck_velocity, r.striker_velocity, r.balance_error);
   return r;
 }
 
@@ -236,8 +250,8 @@ void verify_bars(const BarImpact& r, const std::string& geometry) {
   // 2 % of the contact duration, as the 1-D solution gives it. The penalty's own lag is a few
   // steps (docs/theory/coupling.md, "Slide surfaces": 4 at the default penalty scale 0.3, 10 at
   // 0.1), 1.2 % of this duration at 100 cells a bar.
-  test::verify({"Slide surface, equal elastic bars, " + geometry + ": contact duration", "2 L / c_p (1-D wave solution)",
-                r.expected_time, r.contact_time, 0.02, true, "s"});
+  test::verify({"Slide surface, equal elastic bars, " + geometry + ": contact duration",
+                "2 L / c_p (1-D wave solution)", r.expected_time, r.contact_time, 0.02, true, "s"});
   test::verify({"Slide surface, equal elastic bars, " + geometry + ": energy after separation / before",
                 "1 (elastic impact)", 1.0, r.energy_ratio, 0.005, true, "-"});
   test::verify({"Slide surface, equal elastic bars, " + geometry + ": energy balance with the contact work",
@@ -274,8 +288,8 @@ TEST(DetachParts, DoublesTheSharedNodesAndMovesTheirSets) {
   ASSERT_EQ(d.b.size(), 2u);
   const auto a = element_face_nodes(mesh, d.a), b = element_face_nodes(mesh, d.b);
   for (std::size_t k = 0; k < a.size(); ++k) {
-    EXPECT_LT(a[k], static_cast<std::int64_t>(nodes));   // the group keeps its nodes
-    EXPECT_GE(b[k], static_cast<std::int64_t>(nodes));   // the rest takes the copies
+    EXPECT_LT(a[k], static_cast<std::int64_t>(nodes));                         // the group keeps its nodes
+    EXPECT_GE(b[k], static_cast<std::int64_t>(nodes));                         // the rest takes the copies
     EXPECT_EQ(mesh.coordinates[static_cast<std::size_t>(a[k]) * 2 + 1], 0.0);  // on the shared edge y = 0
   }
   // Face pairs meet face to face: opposite turns over the same points.

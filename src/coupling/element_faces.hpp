@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fem/fem_elements.hpp"
+#include "mesh/element_face_tables.hpp"
 
 namespace camouflet::join_faces {
 
@@ -19,8 +20,8 @@ inline constexpr int per_element = D == 2 ? 4 : 6;
 template <int D>
 inline constexpr int nodes_per_face = D == 2 ? 2 : 4;
 
-inline constexpr int quad[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-inline constexpr int hex[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+using element_face_tables::hex;
+using element_face_tables::quad;
 
 // The nodes of local face f of element e, in the table's order.
 template <int D>

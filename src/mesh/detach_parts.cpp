@@ -4,18 +4,17 @@
 #include <array>
 #include <map>
 
+#include "mesh/element_face_tables.hpp"
+
 namespace camouflet {
 
 namespace {
 
-// Local faces in outward node order (the tables of coupling/element_faces.hpp).
-constexpr int quad_faces[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-constexpr int hex_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-
 struct FaceTable {
   int faces = 0, nodes = 0;
-  int local(int f, int a) const { return nodes == 2 ? quad_faces[f][a] : hex_faces[f][a]; }
+  int local(int f, int a) const {
+    return nodes == 2 ? element_face_tables::quad[f][a] : element_face_tables::hex[f][a];
+  }
 };
 
 using Key = std::array<std::int64_t, 4>;

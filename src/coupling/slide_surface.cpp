@@ -12,20 +12,53 @@
 
 namespace camouflet {
 
-using contact_geometry::project_triangle;
-using contact_geometry::quad_normal;
+using contact_geometry::closest_on_segment;
+using contact_geometry::closest_on_triangle;
 
 namespace {
-
-// A foot on a face's seam, within this fraction of the face outside it, still counts: a node
-// that sits on the ridge between two faces must meet one of them.
-constexpr double seam_tolerance = 1e-3;
 
 std::vector<std::int64_t> unique_nodes(const std::vector<std::int64_t>& faces) {
   std::vector<std::int64_t> nodes = faces;
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
+}
+
+// A node within this fraction of a face's size beyond the rim of the other side's surface still
+// meets it: where the parts were joined, the two sides' rims coincide.
+constexpr double seam_tolerance = 1e-3;
+
+// The rim of a side's surface: its edges that bound one face only (sorted node pairs; in 2-D the
+// faces' end points that end one face only, as pairs (node, node)), and every node on the rim.
+template <int F>
+void find_rim(const std::vector<std::int64_t>& faces,
+              std::vector<std::pair<std::int64_t, std::int64_t>>& edges, std::vector<std::int64_t>& nodes) {
+  std::vector<std::pair<std::int64_t, std::int64_t>> all;
+  for (std::size_t k = 0; k + F <= faces.size(); k += F)
+    for (int a = 0; a < (F == 2 ? 2 : F); ++a) {
+      if constexpr (F == 2) {
+        all.emplace_back(faces[k + static_cast<std::size_t>(a)], faces[k + static_cast<std::size_t>(a)]);
+      } else {
+        const std::int64_t i = faces[k + static_cast<std::size_t>(a)],
+                           j = faces[k + static_cast<std::size_t>((a + 1) % F)];
+        all.emplace_back(std::min(i, j), std::max(i, j));
+      }
+    }
+  std::sort(all.begin(), all.end());
+  edges.clear();
+  nodes.clear();
+  for (std::size_t i = 0; i < all.size();) {
+    std::size_t j = i;
+    while (j < all.size() && all[j] == all[i]) ++j;
+    if (j - i == 1) {
+      edges.push_back(all[i]);
+      nodes.push_back(all[i].first);
+      nodes.push_back(all[i].second);
+    }
+    i = j;
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
 }
 
 }  // namespace
@@ -43,8 +76,10 @@ SlideSurfaces<D>::SlideSurfaces(const Model& model) {
         s.faces_a.size() != F * s.elements_a.size() || s.faces_b.size() != F * s.elements_b.size())
       throw InputError(s.where, "parts: the slide surface has no faces between its two sides");
     Surface surface;
-    surface.a = {s.faces_a, s.elements_a, unique_nodes(s.faces_a)};
-    surface.b = {s.faces_b, s.elements_b, unique_nodes(s.faces_b)};
+    surface.a = {s.faces_a, s.elements_a, unique_nodes(s.faces_a), {}, {}};
+    surface.b = {s.faces_b, s.elements_b, unique_nodes(s.faces_b), {}, {}};
+    find_rim<F>(surface.a.faces, surface.a.rim_edges, surface.a.rim_nodes);
+    find_rim<F>(surface.b.faces, surface.b.rim_edges, surface.b.rim_nodes);
     surface.friction = s.friction;
     surface.penalty_scale = s.penalty_scale;
     surfaces_.push_back(std::move(surface));
@@ -104,6 +139,44 @@ double SlideSurfaces<D>::settle(const double* v, double dt) const {
 }
 
 template <int D>
+template <class Point>
+bool SlideSurfaces<D>::closest_foot(const Side& faces, std::size_t k, int piece, const Vec<D>& p,
+                                    const Point& point, Foot& foot) {
+  const std::int64_t* q = &faces.faces[k * F];
+  foot.face = k;
+  if constexpr (D == 2) {
+    const Vec<2> a = point(q[0]), b = point(q[1]);
+    const Vec<2> ab = b - a;
+    const double length = std::sqrt(dot(ab, ab));
+    if (!(length > 0.0)) return false;
+    foot.normal = Vec<2>{{ab[1] / length, -ab[0] / length}};  // outward of a counter-clockwise element
+    const double t = closest_on_segment<2>(p, a, b);
+    foot.count = 2;
+    foot.on = {q[0], q[1], 0};
+    foot.weight = {1.0 - t, t, 0.0};
+    foot.interior = t > 0.0 && t < 1.0;
+    const Vec<2> c = a + ab * t;
+    foot.distance2 = dot(p - c, p - c);
+  } else {
+    // The quad as the triangles (0, 1, 2) and (0, 2, 3), each with its own outward normal.
+    constexpr int triangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    const int* tri = triangles[piece];
+    const Vec<3> a = point(q[tri[0]]), b = point(q[tri[1]]), c = point(q[tri[2]]);
+    const Vec<3> ab = b - a, ac = c - a;
+    Vec<3> n{{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]}};
+    const double area2 = std::sqrt(dot(n, n));
+    if (!(area2 > 0.0)) return false;
+    foot.normal = n * (1.0 / area2);
+    foot.interior = closest_on_triangle(p, a, b, c, foot.weight);
+    foot.count = 3;
+    foot.on = {q[tri[0]], q[tri[1]], q[tri[2]]};
+    const Vec<3> f = a * foot.weight[0] + b * foot.weight[1] + c * foot.weight[2];
+    foot.distance2 = dot(p - f, p - f);
+  }
+  return true;
+}
+
+template <int D>
 void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& faces, const double* x,
                             const double* v, const double* m, const std::vector<char>& eroded, double* f,
                             double dt_stable) {
@@ -116,12 +189,15 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
     return static_cast<std::size_t>(e) >= eroded.size() || !eroded[static_cast<std::size_t>(e)];
   };
   const std::size_t face_count = faces.elements.size();
+  constexpr int pieces = D == 2 ? 1 : 2;  // a segment; a quad's two triangles
 
-  // Bucket search: each face's box, grown by its capture depth (half its size), into the cells of
-  // a grid as coarse as the largest grown box, so that a node looks in its own cell only.
+  // Bucket search: each face's box, grown by its capture depth (half its size), into every cell of
+  // a grid it overlaps, so that a node looks in its own cell only. The cell is the median grown
+  // box of the live faces: one face stretched far (or eroded, out of the search) must not make
+  // the cell, and with it every node's list, as large as itself,
   std::vector<std::array<double, 2 * D>> box(face_count);
-  std::vector<double> capture(face_count, 0.0);
-  double cell = 0.0;
+  std::vector<double> capture(face_count, 0.0), extents;
+  extents.reserve(face_count);
   for (std::size_t k = 0; k < face_count; ++k) {
     auto& b = box[k];
     for (int i = 0; i < D; ++i) b[i] = std::numeric_limits<double>::infinity(), b[D + i] = -b[i];
@@ -133,8 +209,14 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
     for (int i = 0; i < D; ++i) size = std::max(size, b[D + i] - b[i]);
     capture[k] = 0.5 * size;
     for (int i = 0; i < D; ++i) b[i] -= capture[k], b[D + i] += capture[k];
-    for (int i = 0; i < D; ++i) cell = std::max(cell, b[D + i] - b[i]);
+    if (live(faces.elements[k])) extents.push_back(2.0 * size);
   }
+  if (extents.empty()) return;
+  std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2),
+                   extents.end());
+  // ... nor so fine that the largest face spans more than 16 cells a side.
+  const double cell =
+      std::max(extents[extents.size() / 2], *std::max_element(extents.begin(), extents.end()) / 16.0);
   if (!(cell > 0.0) || !std::isfinite(cell)) return;
   auto cell_of = [&](double c) { return static_cast<std::int64_t>(std::floor(c / cell)); };
   auto key = [&](const std::array<std::int64_t, 3>& c) {
@@ -172,49 +254,88 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
     for (int d = 0; d < D; ++d) c[d] = cell_of(p[d]);
     const auto found = grid.find(key(c));
     if (found == grid.end()) continue;
-    // The nearest face the node projects onto, within its capture depth.
-    double best = std::numeric_limits<double>::infinity(), gap = 0.0;
-    std::array<std::int64_t, 3> on{};
-    std::array<double, 3> weight{};
-    int count = 0;
-    Vec<D> normal{};
-    for (const std::uint32_t k : found->second) {
-      const std::int64_t* q = &faces.faces[static_cast<std::size_t>(k) * F];
-      if constexpr (D == 2) {
-        const Vec<2> a = point(q[0]), b = point(q[1]);
-        const Vec<2> ab = b - a;
-        const double length = std::sqrt(dot(ab, ab));
-        if (!(length > 0.0)) continue;
-        const Vec<2> t = ab * (1.0 / length);
-        const Vec<2> n{{t[1], -t[0]}};  // outward of a counter-clockwise element
-        const Vec<2> ap = p - a;
-        const double xi = dot(ap, t) / length, g = dot(ap, n);
-        if (xi < -seam_tolerance || xi > 1.0 + seam_tolerance || std::abs(g) > capture[k]) continue;
-        if (std::abs(g) < best) {
-          const double w = std::clamp(xi, 0.0, 1.0);
-          best = std::abs(g), gap = g, count = 2, normal = n, on = {q[0], q[1], 0},
-          weight = {1.0 - w, w, 0.0};
+    // The closest point of the other side's surface. The distance to it is continuous however
+    // the node moves, across the seams, ridges and valleys of the faces alike, and so is the
+    // spring's potential k d^2 / 2: a node that took the nearest face it projects onto met a
+    // depth that jumped where its foot left one face for the next, and each jump gave the spring
+    // energy (the 3-D box under a blast, the sliding box under gravity).
+    Foot best;
+    for (const std::uint32_t k : found->second)
+      for (int piece = 0; piece < pieces; ++piece) {
+        Foot foot;
+        if (closest_foot(faces, k, piece, p, point, foot) && foot.distance2 < best.distance2) best = foot;
+      }
+    if (best.count == 0) continue;
+    const double distance = std::sqrt(best.distance2);
+    if (!(distance > 0.0) || distance > capture[best.face]) continue;
+    Vec<D> foot_point{};
+    for (int a = 0; a < best.count; ++a)
+      foot_point =
+          foot_point + point(best.on[static_cast<std::size_t>(a)]) * best.weight[static_cast<std::size_t>(a)];
+    double gap = dot(p - foot_point, best.normal);  // the signed distance when the foot is inside
+    Vec<D> normal = best.normal;
+    if (!best.interior) {
+      // On an edge or corner: the pieces that share the closest point. The node is inside the
+      // other side's body when behind the sum of their normals (outside a convex edge it lies in
+      // front of both faces, inside a valley behind both), and is pushed towards the point.
+      Vec<D> behind{};
+      std::array<Vec<D>, D> basis{};  // the directions the normals span, orthonormal
+      int span = 0;
+      const double tie = 1e-9 * capture[best.face];
+      for (const std::uint32_t k : found->second)
+        for (int piece = 0; piece < pieces; ++piece) {
+          Foot foot;
+          if (!closest_foot(faces, k, piece, p, point, foot)) continue;
+          if (std::abs(std::sqrt(foot.distance2) - distance) > tie) continue;
+          Vec<D> q{};
+          for (int a = 0; a < foot.count; ++a)
+            q = q + point(foot.on[static_cast<std::size_t>(a)]) * foot.weight[static_cast<std::size_t>(a)];
+          if (dot(q - foot_point, q - foot_point) > tie * tie) continue;
+          behind = behind + foot.normal;
+          Vec<D> rest = foot.normal;
+          for (int i = 0; i < span; ++i)
+            rest = rest - basis[static_cast<std::size_t>(i)] * dot(rest, basis[static_cast<std::size_t>(i)]);
+          // A normal within about 10 degrees of the span adds no direction of its own: a bent
+          // surface's rim stays a rim.
+          const double length = std::sqrt(dot(rest, rest));
+          if (span < D && length > 0.2) basis[static_cast<std::size_t>(span++)] = rest * (1.0 / length);
         }
-      } else {
-        const Vec<3> corner[4] = {point(q[0]), point(q[1]), point(q[2]), point(q[3])};
-        Vec<3> n;
-        if (!quad_normal(corner[0], corner[1], corner[2], corner[3], n)) continue;
-        constexpr int triangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
-        for (const auto& tri : triangles) {
-          std::array<double, 3> w{};
-          double g = 0.0;
-          if (!project_triangle(p, corner[tri[0]], corner[tri[1]], corner[tri[2]], n, w, g, seam_tolerance))
-            continue;
-          if (std::abs(g) > capture[k] || !(std::abs(g) < best)) continue;
-          double sum = 0.0;
-          for (double& wa : w) wa = std::max(wa, 0.0), sum += wa;
-          for (double& wa : w) wa /= sum;
-          best = std::abs(g), gap = g, count = 3, normal = n, weight = w;
-          on = {q[tri[0]], q[tri[1]], q[tri[2]]};
-        }
+      gap = dot(p - foot_point, behind) < 0.0 ? -distance : distance;
+      normal = (foot_point - p) * (1.0 / distance);
+      // On the rim of the other side's surface (an edge or corner bounding one face only) a node
+      // may lie beside the surface rather than against it: then the way from the point to the
+      // node leaves the span of the normals there (for a plain rim, the face's normal; at the end
+      // of a valley, the valley's two). Within 1e-3 of a face size it still counts: where the
+      // parts were joined, the two sides' rims coincide.
+      std::array<std::int64_t, 3> carrier{};
+      int carriers = 0;
+      for (int a = 0; a < best.count; ++a)
+        if (best.weight[static_cast<std::size_t>(a)] > 0.0)
+          carrier[static_cast<std::size_t>(carriers++)] = best.on[static_cast<std::size_t>(a)];
+      const bool rim =
+          (carriers == 1 && std::binary_search(faces.rim_nodes.begin(), faces.rim_nodes.end(), carrier[0])) ||
+          (carriers == 2 &&
+           std::binary_search(faces.rim_edges.begin(), faces.rim_edges.end(),
+                              std::pair{std::min(carrier[0], carrier[1]), std::max(carrier[0], carrier[1])}));
+      if (rim) {
+        // Within it the depth and the push are those along the span: a node a hair beside the
+        // rim is not pushed sideways.
+        Vec<D> along{};
+        for (int i = 0; i < span; ++i)
+          along = along + basis[static_cast<std::size_t>(i)] *
+                              dot(p - foot_point, basis[static_cast<std::size_t>(i)]);
+        const Vec<D> beside = (p - foot_point) - along;
+        if (dot(beside, beside) > std::pow(seam_tolerance * 2.0 * capture[best.face], 2)) continue;
+        const double depth = std::sqrt(dot(along, along));
+        if (!(depth > 0.0)) continue;
+        gap = dot(along, behind) < 0.0 ? -depth : depth;
+        normal = along * (-1.0 / depth);
       }
     }
-    if (count == 0 || !(gap < 0.0)) continue;
+    if (!(gap < 0.0)) continue;
+    const int count = best.count;
+    const std::array<std::int64_t, 3>& on = best.on;
+    const std::array<double, 3>& weight = best.weight;
     // The pair's mass along the normal, the spring and the friction.
     double inverse = 1.0 / m[node];
     for (int a = 0; a < count; ++a) {

@@ -5,10 +5,19 @@
 // against the faces of the other (the two passes of LS-DYNA's surface-to-surface contact, theory
 // manual, "Contact-impact algorithm"), so neither side is master.
 //
-// A node at signed distance g < 0 from the face it projects onto (the nearest face of the other
-// side within half that face's size; its outward normal n; a linear segment in 2-D, the two
-// triangles (0,1,2), (0,2,3) of a quad in 3-D) is pushed out with
-//   normal   F_n = k (-g) n,              k = penalty_scale m_eff / dt_stable^2
+// A node behind the other side's surface, at distance d from its closest point on it (the faces
+// of the other side within half their size; a linear segment in 2-D, the two triangles (0,1,2),
+// (0,2,3) of a quad in 3-D), is pushed towards that point:
+//   F = k d n,              k = penalty_scale m_eff / dt_stable^2
+// n the face's outward normal when the closest point lies inside a face, the direction from the
+// node to the point when it lies on an edge or corner between faces. The distance to the closest
+// point is continuous however the node moves, across seams, convex edges and valleys, so the
+// spring's potential k d^2 / 2 is too: the nearest face the node projected onto (the first form)
+// left a node in a valley without force and gave it the full depth when its foot came back onto a
+// face, and that jump fed energy into the 3-D box (coarse3d, stopped at 39 ms). "Behind" is behind
+// the face, or, at an edge or corner, behind the sum of the normals that share it; where the
+// closest point lies on the rim of the other side's surface (an edge or corner bounding one face
+// only) the node is beside that surface and meets it only within 1e-3 of a face size.
 // m_eff the mass of the node-face pair (1/m_eff = 1/m_node + sum_a w_a^2 / m_a, w_a the face
 // nodes' weights at the foot). F acts on the node and -w_a F on the face's nodes, so momentum is
 // conserved exactly; the force vanishes for g >= 0, so the sides separate and recontact freely.
@@ -35,6 +44,8 @@
 // redone each step), so a restart continues it exactly.
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -80,12 +91,31 @@ class SlideSurfaces {
     std::vector<std::int64_t> faces;     // F nodes per face
     std::vector<std::int64_t> elements;  // the element each face bounds
     std::vector<std::int64_t> nodes;     // every node of the faces, once
+    // The surface's rim: edges bounding one face only (sorted node pairs; unused in 2-D) and the
+    // nodes on it (sorted).
+    std::vector<std::pair<std::int64_t, std::int64_t>> rim_edges;
+    std::vector<std::int64_t> rim_nodes;
   };
   struct Surface {
     Side a, b;
     double friction = 0.0;
     double penalty_scale = 0.3;
   };
+  // The closest point of piece `piece` of face k (a segment in 2-D; triangle (0, 1, 2) or
+  // (0, 2, 3) of a quad in 3-D) to the point p, the face's nodes placed by point(node).
+  struct Foot {
+    std::size_t face = 0;
+    int count = 0;  // face nodes carrying the foot: 2 or 3 (0: none found)
+    std::array<std::int64_t, 3> on{};
+    std::array<double, 3> weight{};
+    Vec<D> normal{};        // the piece's outward unit normal
+    bool interior = false;  // inside the piece, not on its edge or corner
+    double distance2 = std::numeric_limits<double>::infinity();
+  };
+  template <class Point>
+  static bool closest_foot(const Side& faces, std::size_t k, int piece, const Vec<D>& p, const Point& point,
+                           Foot& foot);
+
   // The nodes of `nodes` against the faces of `faces`.
   void pass(const Surface& s, const Side& nodes, const Side& faces, const double* x, const double* v,
             const double* m, const std::vector<char>& eroded, double* f, double dt_stable);

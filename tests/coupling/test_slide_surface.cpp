@@ -5,6 +5,8 @@
 //  * two equal elastic bars in uniaxial strain, one striking the other at v0, stay in contact for
 //    2 L / c and part with the struck bar at v0 and the striker at rest, the energy given back
 //    (plane strain, r-z and 3-D);
+//  * a block driven into a corner: its corner node held by both faces of the valley, as deep as
+//    the floor's nodes times sqrt(2) (plane strain and 3-D);
 //  * the detachment itself: the doubled nodes, the node and face sets that follow them.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -270,6 +272,77 @@ TEST(SlideSurface, EqualBarsExchangeTheirMomentumAxisymmetric) {
 
 TEST(SlideSurface, EqualBarsExchangeTheirMomentum3D) {
   verify_bars(bar_impact<3>(GeometryMode::three_d), "3-D");
+}
+
+// A block driven at v0 along the diagonal into a corner: a floor (y < 0) and a wall (x < 0) fused
+// into one base, so that the base's surface has a valley along the block's corner (a line along z
+// in 3-D). Returns the deepest penetration of the block's corner node(s) into the base (the
+// distance to the free quadrant, sqrt(min(x, 0)^2 + min(y, 0)^2)) over the impact, divided by the
+// deepest penetration of the block's other nodes on the floor (-min(y, 0)).
+template <int D>
+double corner_penetration_ratio() {
+  test::use_threads(1);
+  const double v0 = 3.0, h = 0.025;
+  std::string c =
+      fmt::format("[run]\ngeometry = \"{}\"\nend_time = 2e-4\ncfl = 0.6\n\n", D == 2 ? "plane_strain" : "3d");
+  c += solid_material();
+  if (D == 2) {
+    c += block("floor", "[-0.05, -0.05]", "[0.2, 0.05]", "[8, 2]");
+    c += block("wall", "[-0.05, 0.0]", "[0.05, 0.1]", "[2, 4]");
+    c += block("block", "[0.0, 0.0]", "[0.1, 0.05]", "[4, 2]",
+               fmt::format("initial_velocity = {}\n", vec({-v0, -v0})));
+  } else {
+    c += block("floor", "[-0.05, -0.05, 0.0]", "[0.2, 0.05, 0.05]", "[8, 2, 2]");
+    c += block("wall", "[-0.05, 0.0, 0.0]", "[0.05, 0.1, 0.05]", "[2, 4, 2]");
+    c += block("block", "[0.0, 0.0, 0.0]", "[0.1, 0.05, 0.05]", "[4, 2, 2]",
+               fmt::format("initial_velocity = {}\n", vec({-v0, -v0, 0.0})));
+  }
+  c += boundary("fixed", "floor.ymin");
+  c += boundary("fixed", "wall.xmin");
+  c += "[[slide_surfaces]]\nparts = [\"block\"]\n";
+  const Model model = read_case_text(c, "corner.toml");
+  Solver<D> solver(model);
+  // The block's nodes at y = 0: the corner ones at x = 0, the others at x > 0.
+  const auto& mesh = model.mesh;
+  std::vector<char> in_block(solver.node_count(), 0);
+  for (std::size_t e = 0; e < mesh.element_count(); ++e)
+    if (mesh.element_part[e] == 2)
+      for (int a = 0; a < mesh.nodes_per_element; ++a)
+        in_block[static_cast<std::size_t>(
+            mesh.connectivity[e * static_cast<std::size_t>(mesh.nodes_per_element) +
+                              static_cast<std::size_t>(a)])] = 1;
+  std::vector<std::size_t> corner, bottom;
+  for (std::size_t n = 0; n < solver.node_count(); ++n) {
+    if (!in_block[n] || std::abs(solver.position()[n * D + 1]) > 1e-9) continue;
+    (std::abs(solver.position()[n * D]) < 1e-9 ? corner : bottom).push_back(n);
+  }
+  double deepest_corner = 0.0, deepest_bottom = 0.0;
+  while (solver.time() < 2e-4) {
+    solver.limit_next_step(2e-4 - solver.time());
+    solver.step();
+    const auto& x = solver.position();
+    for (std::size_t n : corner)
+      deepest_corner =
+          std::max(deepest_corner, std::hypot(std::min(x[n * D], 0.0), std::min(x[n * D + 1], 0.0)));
+    for (std::size_t n : bottom) deepest_bottom = std::max(deepest_bottom, -std::min(x[n * D + 1], 0.0));
+  }
+  fmt::print("corner {}: corner nodes {} deepest {:.3e} m, floor nodes {} deepest {:.3e} m (h {})\n",
+             D == 2 ? "2-D" : "3-D", corner.size(), deepest_corner, bottom.size(), deepest_bottom, h);
+  return deepest_corner / deepest_bottom;
+}
+
+TEST(SlideSurface, ACornerDrivenIntoAValleyIsHeldLikeTheFaces) {
+  // The corner node meets both faces of the valley: pushed into it by its depth along each, it
+  // lies sqrt(2) times as deep as a node on the floor, the nearest point of the base's surface
+  // being the valley's line. Taking the nearest face the node projected onto, a node inside the
+  // valley met no face at all (its foot fell beyond both) and sank until its elements stopped it.
+  const std::pair<const char*, double> runs[] = {{"plane strain", corner_penetration_ratio<2>()},
+                                                 {"3-D", corner_penetration_ratio<3>()}};
+  for (const auto& [geometry, ratio] : runs)
+    test::verify(
+        {fmt::format("Slide surface, block driven into a corner, {}: corner node's depth / floor node's",
+                     geometry),
+         "sqrt(2) (the valley's two faces)", std::numbers::sqrt2, ratio, 0.1, true, "-"});
 }
 
 TEST(DetachParts, DoublesTheSharedNodesAndMovesTheirSets) {

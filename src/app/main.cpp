@@ -4,8 +4,18 @@
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "parallel/communicator.hpp"
 
 int main(int argc, char** argv) {
+  // Under mpirun, MPI's world (docs/parallel.md); without it, serial and MPI untouched.
+  camouflet::ParallelSession session(argc, argv);
+  if (camouflet::world().size() > 1) {
+    if (camouflet::world().rank() == 0)
+      std::cerr << "error: camouflet was started on " << camouflet::world().size()
+                << " MPI ranks: runs across ranks are not there yet (docs/parallel.md); run it without "
+                   "mpirun\n";
+    return camouflet::exit_bad_input;
+  }
   CLI::App app{"Camouflet: explosions buried in soil and the structures they load"};
   app.set_version_flag("--version", std::string("camouflet ") + CAMOUFLET_VERSION);
   app.require_subcommand(1);

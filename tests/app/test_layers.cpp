@@ -24,7 +24,7 @@ const std::map<std::string, int>& layer_rank() {
   static const std::map<std::string, int> rank = {
       {"core", 0},     {"materials", 1}, {"checkpoint", 1}, {"empirical", 1}, {"model", 2},
       {"mesh", 3},     {"fem", 3},       {"sph", 3},        {"boundary", 3},  {"output", 3},
-      {"coupling", 4}, {"solver", 5},    {"case", 6},       {"app", 7},
+      {"coupling", 4}, {"parallel", 4},  {"solver", 5},     {"case", 6},      {"app", 7},
   };
   return rank;
 }
@@ -165,8 +165,8 @@ TEST(Layers, StepCallsNoMethodByName) {
     ++body_lines;
     for (const char* name : {"fem_", "sph_", "coupling_->"})
       if (text.find(name) != std::string::npos && text.find("boundaries_.") == std::string::npos)
-        ADD_FAILURE() << "src/solver/solver.cpp:" << line << ": step() names " << name << " outside a boundary call: "
-                      << text;
+        ADD_FAILURE() << "src/solver/solver.cpp:" << line << ": step() names " << name
+                      << " outside a boundary call: " << text;
   }
   EXPECT_GT(body_lines, 10) << "Solver<D>::step() not found in src/solver/solver.cpp";
 }

@@ -8,23 +8,15 @@
 
 #include <stdexcept>
 
+#include "common/block_mesh.hpp"
 #include "common/verification.hpp"
-#include "mesh/block_generator.hpp"
 #include "parallel/partition.hpp"
 
 namespace camouflet {
 namespace {
 
 FemMesh block_mesh(int dimension, std::array<int, 3> cells) {
-  FemMesh mesh;
-  mesh.dimension = dimension;
-  mesh.nodes_per_element = dimension == 3 ? 8 : 4;
-  BlockSpec spec;
-  spec.name = "b";
-  spec.size = {1.0 * cells[0], 1.0 * cells[1], 1.0 * cells[2]};
-  spec.cells = cells;
-  add_block(mesh, spec);
-  return mesh;
+  return test::block_mesh(dimension, {1.0 * cells[0], 1.0 * cells[1], 1.0 * cells[2]}, cells);
 }
 
 TEST(ElementFaceGraph, EachInteriorFaceJoinsTwoElements) {

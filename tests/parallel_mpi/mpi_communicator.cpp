@@ -6,7 +6,7 @@
 #include <cstring>
 #include <vector>
 
-#include "mesh/block_generator.hpp"
+#include "common/block_mesh.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/partition.hpp"
 
@@ -64,14 +64,7 @@ TEST(MpiWorld, BroadcastCarriesTheRootsBytes) {
 
 TEST(MpiWorld, EveryRankPartitionsAMeshAlike) {
   const Communicator& c = world();
-  FemMesh mesh;
-  mesh.dimension = 3;
-  mesh.nodes_per_element = 8;
-  BlockSpec spec;
-  spec.name = "b";
-  spec.size = {2.0, 1.0, 1.0};
-  spec.cells = {24, 12, 12};
-  add_block(mesh, spec);
+  const FemMesh mesh = test::block_mesh(3, {2.0, 1.0, 1.0}, {24, 12, 12});
   const std::vector<int> mine = partition_elements(mesh, 4);
   std::vector<char> bytes(mine.size() * sizeof(int));
   std::memcpy(bytes.data(), mine.data(), bytes.size());

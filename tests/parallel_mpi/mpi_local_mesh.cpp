@@ -12,7 +12,7 @@
 #include <map>
 #include <vector>
 
-#include "mesh/block_generator.hpp"
+#include "common/block_mesh.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/local_mesh.hpp"
 #include "parallel/partition.hpp"
@@ -21,14 +21,7 @@ namespace camouflet {
 namespace {
 
 FemMesh moved_block() {
-  FemMesh mesh;
-  mesh.dimension = 3;
-  mesh.nodes_per_element = 8;
-  BlockSpec spec;
-  spec.name = "b";
-  spec.size = {1.2, 0.8, 0.6};
-  spec.cells = {12, 8, 6};
-  add_block(mesh, spec);
+  FemMesh mesh = test::block_mesh(3, {1.2, 0.8, 0.6}, {12, 8, 6});
   for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) mesh.coordinates[i] += 0.01 * std::sin(1.7 * i);
   return mesh;
 }

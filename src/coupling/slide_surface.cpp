@@ -258,7 +258,7 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
     // the node moves, across the seams, ridges and valleys of the faces alike, and so is the
     // spring's potential k d^2 / 2: a node that took the nearest face it projects onto met a
     // depth that jumped where its foot left one face for the next, and each jump gave the spring
-    // energy (the 3-D box under a blast, the sliding box under gravity).
+    // energy (the 3-D box under a blast).
     Foot best;
     for (const std::uint32_t k : found->second)
       for (int piece = 0; piece < pieces; ++piece) {
@@ -268,10 +268,13 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
     if (best.count == 0) continue;
     const double distance = std::sqrt(best.distance2);
     if (!(distance > 0.0) || distance > capture[best.face]) continue;
-    Vec<D> foot_point{};
-    for (int a = 0; a < best.count; ++a)
-      foot_point =
-          foot_point + point(best.on[static_cast<std::size_t>(a)]) * best.weight[static_cast<std::size_t>(a)];
+    auto place = [&](const Foot& foot) {
+      Vec<D> q{};
+      for (int a = 0; a < foot.count; ++a)
+        q = q + point(foot.on[static_cast<std::size_t>(a)]) * foot.weight[static_cast<std::size_t>(a)];
+      return q;
+    };
+    const Vec<D> foot_point = place(best);
     double gap = dot(p - foot_point, best.normal);  // the signed distance when the foot is inside
     Vec<D> normal = best.normal;
     if (!best.interior) {
@@ -287,9 +290,7 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
           Foot foot;
           if (!closest_foot(faces, k, piece, p, point, foot)) continue;
           if (std::abs(std::sqrt(foot.distance2) - distance) > tie) continue;
-          Vec<D> q{};
-          for (int a = 0; a < foot.count; ++a)
-            q = q + point(foot.on[static_cast<std::size_t>(a)]) * foot.weight[static_cast<std::size_t>(a)];
+          const Vec<D> q = place(foot);
           if (dot(q - foot_point, q - foot_point) > tie * tie) continue;
           behind = behind + foot.normal;
           Vec<D> rest = foot.normal;

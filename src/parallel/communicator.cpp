@@ -68,10 +68,8 @@ bool mpi_initialised_here = false;
 }  // namespace
 
 double Communicator::sum(double value) const {
-  if (size() == 1) return value;
-  double total = 0.0;
-  for (double v : all_gather(std::span<const double>(&value, 1))) total += v;
-  return total;
+  sum(std::span<double>(&value, 1));
+  return value;
 }
 
 std::int64_t Communicator::sum(std::int64_t value) const {
@@ -91,22 +89,27 @@ void Communicator::sum(std::span<double> values) const {
   }
 }
 
-Communicator::Located Communicator::min(double value) const {
-  if (size() == 1) return {value, 0};
-  const std::vector<double> all = all_gather(std::span<const double>(&value, 1));
-  Located best{all[0], 0};
-  for (int r = 1; r < size(); ++r)
-    if (all[static_cast<std::size_t>(r)] < best.value) best = {all[static_cast<std::size_t>(r)], r};
+namespace {
+
+// The value `better` picks over all ranks, and its rank: the lowest rank on a tie.
+template <class Better>
+Communicator::Located located(const Communicator& c, double value, Better better) {
+  if (c.size() == 1) return {value, 0};
+  const std::vector<double> all = c.all_gather(std::span<const double>(&value, 1));
+  Communicator::Located best{all[0], 0};
+  for (int r = 1; r < c.size(); ++r)
+    if (better(all[static_cast<std::size_t>(r)], best.value)) best = {all[static_cast<std::size_t>(r)], r};
   return best;
 }
 
+}  // namespace
+
+Communicator::Located Communicator::min(double value) const {
+  return located(*this, value, [](double a, double b) { return a < b; });
+}
+
 Communicator::Located Communicator::max(double value) const {
-  if (size() == 1) return {value, 0};
-  const std::vector<double> all = all_gather(std::span<const double>(&value, 1));
-  Located best{all[0], 0};
-  for (int r = 1; r < size(); ++r)
-    if (all[static_cast<std::size_t>(r)] > best.value) best = {all[static_cast<std::size_t>(r)], r};
-  return best;
+  return located(*this, value, [](double a, double b) { return a > b; });
 }
 
 bool Communicator::any(bool flag) const {

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <new>
 
+#include "parallel/communicator.hpp"
 #include "solver/interrupt.hpp"
 
 namespace camouflet::app {
@@ -20,33 +21,39 @@ std::string format_input_error(const InputError& e) {
 }
 
 int run_guarded(const std::function<int()>& body) {
+  // Under mpirun (docs/parallel.md) a bad case, a numerical failure and a signal reach every rank
+  // alike (each reads the case; the solver agrees on failures and signals), so rank 0 alone says
+  // them. Anything else happened on one rank while the others may wait for it in an exchange: it
+  // is said where it happened and stops every rank.
+  const Communicator& ranks = world();
+  const auto shared = [&ranks](const std::string& message, int code) {
+    if (ranks.rank() == 0) std::cerr << message << '\n';
+    return code;
+  };
+  const auto alone = [&ranks](const std::string& message, int code) {
+    std::cerr << (ranks.size() > 1 ? fmt::format("rank {}: ", ranks.rank()) : std::string()) << message << '\n';
+    if (ranks.size() > 1) abort_world(code);
+    return code;
+  };
   try {
     return body();
   } catch (const RunInterrupted& e) {
-    std::cerr << "camouflet: " << e.what() << '\n';
-    return exit_interrupted;
+    return shared(std::string("camouflet: ") + e.what(), exit_interrupted);
   } catch (const InputError& e) {
-    std::cerr << format_input_error(e) << '\n';
-    return exit_bad_input;
+    return shared(format_input_error(e), exit_bad_input);
   } catch (const NumericalError& e) {
-    std::cerr << "error: numerical failure: " << e.what() << '\n';
-    return exit_numerical_failure;
+    return shared(std::string("error: numerical failure: ") + e.what(), exit_numerical_failure);
   } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << "error: I/O failure: " << e.what() << '\n';
-    return exit_io_failure;
+    return alone(std::string("error: I/O failure: ") + e.what(), exit_io_failure);
   } catch (const std::ios_base::failure& e) {
-    std::cerr << "error: I/O failure: " << e.what() << '\n';
-    return exit_io_failure;
+    return alone(std::string("error: I/O failure: ") + e.what(), exit_io_failure);
   } catch (const std::bad_alloc&) {
-    std::cerr << "error: out of memory (the model is too large for this machine)\n";
-    return exit_numerical_failure;
+    return alone("error: out of memory (the model is too large for this machine)", exit_numerical_failure);
   } catch (const std::exception& e) {
     // A defect, not the user's fault: still a clean message and a non-zero status.
-    std::cerr << "error: internal error: " << e.what() << '\n';
-    return exit_numerical_failure;
+    return alone(std::string("error: internal error: ") + e.what(), exit_numerical_failure);
   } catch (...) {
-    std::cerr << "error: internal error: unknown exception\n";
-    return exit_numerical_failure;
+    return alone("error: internal error: unknown exception", exit_numerical_failure);
   }
 }
 

@@ -1,6 +1,7 @@
 // camouflet: the command line. Subcommands are in their own files (commands.hpp).
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
@@ -9,11 +10,12 @@
 int main(int argc, char** argv) {
   // Under mpirun, MPI's world (docs/parallel.md); without it, serial and MPI untouched.
   camouflet::ParallelSession session(argc, argv);
-  if (camouflet::world().size() > 1) {
+  // Only `run` spreads over ranks; any other command under mpirun would do its work once a rank.
+  if (camouflet::world().size() > 1 && (argc < 2 || std::string(argv[1]) != "run")) {
     if (camouflet::world().rank() == 0)
       std::cerr << "error: camouflet was started on " << camouflet::world().size()
-                << " MPI ranks: runs across ranks are not there yet (docs/parallel.md); run it without "
-                   "mpirun\n";
+                << " MPI ranks: only `camouflet run` runs across ranks (docs/parallel.md); run '"
+                << (argc < 2 ? "" : argv[1]) << "' without mpirun\n";
     return camouflet::exit_bad_input;
   }
   CLI::App app{"Camouflet: explosions buried in soil and the structures they load"};

@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "app/error_report.hpp"
 #include "case/case_fingerprint.hpp"
+#include "parallel/communicator.hpp"
 #include "case/case_reader.hpp"
 #include "solver/interrupt.hpp"
 #include "solver/run.hpp"
@@ -68,6 +69,7 @@ void add_run_command(CLI::App& app, CommandResult& result) {
       options.case_fingerprint = case_fingerprint(args->case_file);
       if (args->threads > 0) omp_set_num_threads(args->threads);
       const RunSummary summary = run_model(model, options);
+      if (world().rank() != 0) return summary.failed ? static_cast<int>(exit_numerical_failure) : static_cast<int>(exit_ok);
       if (!args->quiet)
         std::cerr << fmt::format(
             "{}: t = {:g} s after {} cycles in {:.1f} s wall time, energy error {:.2e}\n",

@@ -24,7 +24,7 @@ typename Boundaries<D>::Work Boundaries<D>::constrain(FemPackage<D>& fem, double
                                            fem.node_mass.data(), fem.elements, fem.batches, dt_mean);
   }
   const double reaction_work = conditions_.constrain(fem.velocity.data(), fem.velocity_old.data(),
-                                                     fem.node_mass.data(), time, dt_old, dt_mean);
+                                                     fem.node_mass.data(), time, dt_old, dt_mean, fem.owned_nodes());
   work.constraints = reaction_work + conditions_.load_work(fem.velocity_old.data(), dt_old);
   return work;
 }

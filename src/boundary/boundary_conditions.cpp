@@ -193,7 +193,7 @@ double BoundaryConditions<D>::load_work(const double* v_old, double dt_old) cons
 
 template <int D>
 double BoundaryConditions<D>::constrain(double* v, const double* v_old, const double* node_mass, double time,
-                                        double dt_old, double dt_mean) {
+                                        double dt_old, double dt_mean, const char* owned) {
   const std::size_t n_reactions = components_.size() + planes_.size() * D;
   if (reaction_previous_.size() != n_reactions) reaction_previous_.assign(n_reactions, 0.0);
   double work = 0.0;
@@ -206,7 +206,7 @@ double BoundaryConditions<D>::constrain(double* v, const double* v_old, const do
       const double dv = -vn * p.normal[static_cast<std::size_t>(i)];
       v[k] += dv;
       const double reaction = dt_mean > 0.0 ? node_mass[p.node] * dv / dt_mean : 0.0;
-      work += 0.5 * (reaction_previous_[r] + reaction) * v_old[k] * dt_old;
+      if (!owned || owned[p.node]) work += 0.5 * (reaction_previous_[r] + reaction) * v_old[k] * dt_old;
       reaction_previous_[r] = reaction;
     }
   }
@@ -216,7 +216,7 @@ double BoundaryConditions<D>::constrain(double* v, const double* v_old, const do
     const double target = c.value * scale(c.history, time);
     const double reaction = dt_mean > 0.0 ? node_mass[c.node] * (target - v[k]) / dt_mean : 0.0;
     v[k] = target;
-    work += 0.5 * (reaction_previous_[r] + reaction) * v_old[k] * dt_old;
+    if (!owned || owned[c.node]) work += 0.5 * (reaction_previous_[r] + reaction) * v_old[k] * dt_old;
     reaction_previous_[r++] = reaction;
   }
   return work;

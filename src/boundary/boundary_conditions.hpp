@@ -34,9 +34,10 @@ class BoundaryConditions {
 
   // Imposes the constraints on v (n*D) for the half step centred on `time`;
   // the reaction force is m (v_constrained - v_free) / dt_mean. Returns the
-  // work of the reactions from t_(n-1) to t_n, centred like load_work (J).
+  // work of the reactions from t_(n-1) to t_n, centred like load_work (J), over the nodes
+  // `owned` flags (every node when null: on ranks, a shared node's reaction counts once).
   double constrain(double* v, const double* v_old, const double* node_mass, double time, double dt_old,
-                   double dt_mean);
+                   double dt_mean, const char* owned = nullptr);
 
   // The constraints alone (no work): used for the initial velocities.
   void constrain(double* v, double time) const;

@@ -34,6 +34,9 @@ void FemPackage<D>::add_element_forces(double dt_previous) {
   forces_zeroed = false;
   hourglass_stored =
       elements.add_internal_forces(position.data(), velocity.data(), force.data(), f_hourglass, hourglass, dt_previous);
+  // The viscous hourglass forces stay each rank's own share: their work (drift_nodes) is the sum
+  // of the shares' over the ranks, as the serial sum is over the elements.
+  if (sharing_) sharing_->sum_shared(force, D);
 }
 
 template <int D>
@@ -74,6 +77,7 @@ typename FemPackage<D>::Drift FemPackage<D>::drift_nodes(double dt_minus, double
   const std::int64_t nn = static_cast<std::int64_t>(node_mass.size());
   const bool with_hourglass = !hourglass_force.empty();
   const RunControl& run = model_->run;
+  const char* owned = owned_nodes();  // on ranks, a shared node's kinetic energy counts once
   double kinetic = 0.0, hourglass_power = 0.0;
   std::int64_t bad = std::numeric_limits<std::int64_t>::max();
 #pragma omp parallel for schedule(static) reduction(+ : kinetic, hourglass_power) reduction(min : bad) if (nn > parallel_threshold_nodes)
@@ -89,7 +93,7 @@ typename FemPackage<D>::Drift FemPackage<D>::drift_nodes(double dt_minus, double
         hourglass_force_previous[k] = 0.0;  // its last use: the next add_element_forces fills it
       }
     }
-    kinetic += 0.5 * node_mass[static_cast<std::size_t>(n)] * vv;
+    if (!owned || owned[n]) kinetic += 0.5 * node_mass[static_cast<std::size_t>(n)] * vv;
     hourglass_power -= fv;
     bool ok = true;
     for (int i = 0; i < D; ++i) {

@@ -15,6 +15,7 @@
 #include "materials/material.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
+#include "model/node_sharing.hpp"
 #include "model/package.hpp"
 #include "model/point_view.hpp"
 #include "model/snapshot.hpp"
@@ -29,7 +30,11 @@ class FemPackage final : public Package<D> {
   // state of its soil parts under gravity, the lumped masses and the parts' initial velocities
   // (mass-weighted where parts meet); embedded bars, erosion criteria, hourglass and bulk
   // viscosity controls. Throws InputError for an inverted element or a part without a material.
-  explicit FemPackage(const Model& model);
+  // On one of several ranks (`sharing`; model/node_sharing.hpp) the model's mesh is this rank's
+  // part: the masses and momenta of the nodes it shares are added up over their holders here,
+  // the forces at every step (add_forces), and messages name the whole mesh's ids. Embedded
+  // bars are refused there (InputError): their forces and masses do not cross ranks yet.
+  explicit FemPackage(const Model& model, const NodeSharing* sharing = nullptr);
 
   std::size_t node_count() const { return node_mass.size(); }
 
@@ -39,7 +44,8 @@ class FemPackage final : public Package<D> {
   // of r-z area-weighted momentum from x(t_n), which the boundaries' loads use (ring_factor()).
   void begin_step(const StepClock& clock) override;
   // Element stresses less q and hourglass resistance (clock.dt advances the stiffness-form
-  // displacements).
+  // displacements); on ranks, then the forces of shared nodes (with the loads the boundaries
+  // added before) added up over their holders, so that gravity, added after, counts once.
   void add_forces(const StepClock& clock) override { add_element_forces(clock.dt); }
   void add_gravity(const std::array<double, 3>& g, double& power) override;
   // The embedded bars onto their host nodes, then v(n+1/2) = v(n-1/2) + F/m dt_mean (a kept,
@@ -83,6 +89,13 @@ class FemPackage final : public Package<D> {
   // elements' speeds from the node velocities and their gathered state. Throws NumericalError
   // for a non-finite element state.
   void start();
+  // On ranks: per local node, whether this rank counts it in global sums; null on one rank.
+  const char* owned_nodes() const { return sharing_ ? sharing_->owned_nodes().data() : nullptr; }
+  // The 1-based id a message gives a local node or element (0-based): its id in the whole mesh.
+  std::int64_t node_id(std::int64_t n) const { return (sharing_ ? sharing_->global_nodes()[static_cast<std::size_t>(n)] : n) + 1; }
+  std::int64_t element_id(std::int64_t e) const {
+    return (sharing_ ? sharing_->global_elements()[static_cast<std::size_t>(e)] : e) + 1;
+  }
   // After anything but the node pass wrote the nodes: the next check() tests them all.
   void mark_nodes_unchecked() { nodes_checked_ = false; }
   // The first element found tangled (edges crossed, area still positive) and the first r-z node
@@ -149,7 +162,12 @@ class FemPackage final : public Package<D> {
   void report_tangled(const KinematicsResult& r, const StepClock& clock);
   NumericalError node_failure(std::int64_t n) const;  // 0-based
 
+  // The local index (0-based) of a node or element a message names by its 1-based id; -1 when
+  // this rank does not hold it.
+  std::int64_t local_index(EntityKind kind, std::int64_t id) const;
+
   const Model* model_ = nullptr;
+  const NodeSharing* sharing_ = nullptr;  // null on one rank
   const double* ring_factor_ = nullptr;
   double element_internal_ = 0.0;  // J, the live elements' at the last gather
   std::int64_t drift_bad_node_ = -1;

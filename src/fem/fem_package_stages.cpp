@@ -18,15 +18,19 @@ void FemPackage<D>::add_gravity(const std::array<double, 3>& g, double& power) {
   // The work of the constant force over the step t_(n-1) -> t_n is m g . v(n-1/2) dt(n-1/2),
   // exactly m g . (x_n - x_(n-1)): the loss of potential energy, the form the central
   // difference's kinetic energy at t_n balances. velocity still holds v(n-1/2) here.
+  // On ranks every copy of a shared node takes the whole m g (the shares of the forces were
+  // added up before), and only its owner counts the power.
   const std::int64_t nn = static_cast<std::int64_t>(node_mass.size());
+  const char* owned = owned_nodes();
   double nodes = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : nodes) if (nn > parallel_threshold_nodes)
   for (std::int64_t n = 0; n < nn; ++n) {
     const double m = node_mass[static_cast<std::size_t>(n)];
+    const bool counted = !owned || owned[n];
     for (int i = 0; i < D; ++i) {
       const std::size_t k = static_cast<std::size_t>(n * D + i);
       force[k] += m * g[static_cast<std::size_t>(i)];
-      nodes += m * g[static_cast<std::size_t>(i)] * velocity[k];
+      if (counted) nodes += m * g[static_cast<std::size_t>(i)] * velocity[k];
     }
   }
   power += nodes;
@@ -49,10 +53,10 @@ NumericalError FemPackage<D>::node_failure(std::int64_t bad) const {
   bool finite = true;
   for (int i = 0; i < D; ++i) finite = finite && std::isfinite(x[i]) && std::isfinite(v[i]);
   if (!finite)
-    return NumericalError(EntityKind::node, bad + 1, "velocity",
+    return NumericalError(EntityKind::node, node_id(bad), "velocity",
                           fmt::format("non-finite position or velocity (v = {})", position_text<D>(v)));
   const int axis = first_outside_domain<D>(run, x);
-  return NumericalError(EntityKind::node, bad + 1, "position",
+  return NumericalError(EntityKind::node, node_id(bad), "position",
                         fmt::format("left the domain box: coordinate {} = {:.6g} m outside [{:.6g}, {:.6g}] m",
                                     axis + 1, x[axis], run.domain_min[static_cast<std::size_t>(axis)],
                                     run.domain_max[static_cast<std::size_t>(axis)]));
@@ -83,7 +87,7 @@ void FemPackage<D>::update_state(const StepClock& clock, EnergyBalance& energy) 
   energy.viscous += r.viscous_work;
   if (r.bad_element >= 0)
     throw NumericalError(
-        EntityKind::element, r.bad_element + 1, "volume",
+        EntityKind::element, element_id(r.bad_element), "volume",
         fmt::format("volume {:.6g} m^3 is not positive (element inverted or collapsed)", r.bad_volume));
   if (r.tangled_element >= 0) report_tangled(r, clock);
   update_materials({clock.dt, clock.time});  // EOS + strength + damage, one call per material batch
@@ -109,7 +113,7 @@ void FemPackage<D>::gather_and_check() {
   const auto e = static_cast<std::size_t>(state.bad_element);
   const MaterialPoints& pts = batches[static_cast<std::size_t>(elements.material[e])];
   const std::size_t p = elements.point[e];
-  throw NumericalError(EntityKind::element, state.bad_element + 1, "stress",
+  throw NumericalError(EntityKind::element, element_id(state.bad_element), "stress",
                        fmt::format("non-finite state: pressure {} Pa, specific energy {} J/kg, sound speed {} m/s",
                                    pts.pressure[p], pts.specific_energy[p], pts.sound_speed[p]));
 }
@@ -118,7 +122,7 @@ template <int D>
 void FemPackage<D>::report_tangled(const KinematicsResult& r, const StepClock& clock) {
   // Not fatal: the buried-structure cases tangle an element now and then (docs/reliability.md);
   // a run must not carry one silently. Each newly tangled element is reported, at most 20 lines.
-  const std::int64_t id = r.tangled_element + 1;
+  const std::int64_t id = element_id(r.tangled_element);
   Reports& w = reports_;
   if (w.first_tangled_cycle < 0) w.first_tangled_element = id, w.first_tangled_cycle = clock.cycle;
   if (id != w.last_tangled_element && w.tangled_lines < 20) {
@@ -148,7 +152,7 @@ void FemPackage<D>::report_axis_crossings(const StepClock& clock) {
   for (std::size_t n = 0; n < nn; ++n) {
     if (!(position[n * D] < 0.0 && displacement[n * D] < 0.0) || w.axis_reported[n]) continue;
     w.axis_reported[n] = 1;
-    const auto id = static_cast<std::int64_t>(n) + 1;
+    const std::int64_t id = node_id(static_cast<std::int64_t>(n));
     if (w.first_axis_cycle < 0) w.first_axis_node = id, w.first_axis_cycle = clock.cycle;
     if (w.axis_lines >= 20) continue;
     ++w.axis_lines;
@@ -167,10 +171,10 @@ typename Package<D>::Vote FemPackage<D>::vote() const {
   vote.dt = best.dt;
   if (best.element >= 0) {
     const auto e = static_cast<std::size_t>(best.element);
-    vote.reason = fmt::format("element {} ({}): l/(c+|v|)", best.element + 1,
+    vote.reason = fmt::format("element {} ({}): l/(c+|v|)", element_id(best.element),
                               model_->materials[static_cast<std::size_t>(elements.material[e])].name);
     vote.kind = EntityKind::element;
-    vote.id = best.element + 1;
+    vote.id = element_id(best.element);
     vote.detail = fmt::format("l = {:.6g} m, c = {:.6g} m/s, |v| = {:.6g} m/s", elements.length[e],
                               elements.stable_wave_speed[e], elements.speed[e]);
   }
@@ -188,18 +192,31 @@ typename Package<D>::Vote FemPackage<D>::vote() const {
 
 template <int D>
 double FemPackage<D>::kinetic_energy() const {
+  const char* owned = owned_nodes();
   double kinetic = 0.0;
   for (std::size_t n = 0; n < node_mass.size(); ++n)
-    for (int i = 0; i < D; ++i)
+    if (!owned || owned[n])
+      for (int i = 0; i < D; ++i)
       kinetic += 0.5 * node_mass[n] * velocity[n * D + static_cast<std::size_t>(i)] *
                  velocity[n * D + static_cast<std::size_t>(i)];
   return kinetic;
 }
 
 template <int D>
+std::int64_t FemPackage<D>::local_index(EntityKind kind, std::int64_t id) const {
+  if (!sharing_) return id - 1;
+  const std::vector<std::int64_t>& global =
+      kind == EntityKind::element ? sharing_->global_elements() : sharing_->global_nodes();
+  const auto it = std::lower_bound(global.begin(), global.end(), id - 1);
+  return it != global.end() && *it == id - 1 ? it - global.begin() : -1;
+}
+
+template <int D>
 std::string FemPackage<D>::describe(EntityKind kind, std::int64_t id) const {
-  if (id < 1) return {};
-  const auto k = static_cast<std::size_t>(id - 1);
+  if (id < 1 || (kind != EntityKind::element && kind != EntityKind::node)) return {};
+  const std::int64_t local = local_index(kind, id);
+  if (local < 0) return {};
+  const auto k = static_cast<std::size_t>(local);
   if (kind == EntityKind::element && k < elements.size()) {
     constexpr int N = FemElements<D>::nodes;
     double c[D] = {};

@@ -151,6 +151,13 @@ void RunOutput::after_cycle(const FieldSnapshot& state) {
   }
 }
 
+bool RunOutput::due(double time) const {
+  const Impl& o = *impl_;
+  const double gi = o.model.output.gauge_interval, fi = o.model.output.field_interval;
+  return gi <= 0.0 || time >= o.next_gauge * (1.0 - time_slack) ||
+         (fi > 0.0 && time >= o.next_field * (1.0 - time_slack));
+}
+
 void RunOutput::finish(const FieldSnapshot& final_state, const RunSummary& summary) {
   Impl& o = *impl_;
   if (o.last_gauge_cycle != final_state.cycle) o.sample(final_state);

@@ -33,6 +33,9 @@ class RunOutput {
   // Called after every cycle; samples gauges and writes snapshots when their
   // intervals have elapsed.
   void after_cycle(const FieldSnapshot& state);
+  // Whether after_cycle at `time` would sample the gauges or write a snapshot (a run across MPI
+  // ranks assembles the whole model's fields only then).
+  bool due(double time) const;
 
   // Final snapshot, last gauge row and summary.json (also after a failure).
   void finish(const FieldSnapshot& final_state, const RunSummary& summary);

@@ -40,7 +40,7 @@ typename Solver<D>::Relaxation Solver<D>::relax(const RunControl::DynamicRelaxat
     r.time += dt_;
     const double factor = std::exp(-rate * dt_);
     for (Package<D>* package : packages_) package->scale_velocities(factor);
-    const double kinetic = energy_.kinetic;  // at t_n of this cycle, before its damping
+    const double kinetic = energy().kinetic;  // at t_n of this cycle, before its damping
     r.peak_kinetic = std::max(r.peak_kinetic, kinetic);
     r.kinetic_ratio = r.peak_kinetic > 0.0 ? kinetic / r.peak_kinetic : 0.0;
     if (after_cycle) after_cycle(r);

@@ -6,9 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "output/progress.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/rank_part.hpp"
+#include "parallel/whole_snapshot.hpp"
 #include "output/run_output.hpp"
 #include "solver/bar_output.hpp"
 #include "solver/energy_guard.hpp"
@@ -21,22 +25,63 @@ namespace camouflet {
 
 namespace {
 
+// On MPI ranks (docs/parallel.md): what each rank steps, and the whole model's snapshot that rank 0
+// writes. Every rank walks through run_dimension alike, so that their exchanges pair up; only
+// rank 0 writes files and progress lines.
+template <int D>
+struct Ranks {
+  Ranks(const Communicator& comm, const Model& whole) : part(comm, whole), whole_snapshot(whole) {}
+  RankPart part;
+  WholeSnapshot whole_snapshot;
+  bool writes() const { return part.comm().rank() == 0; }
+};
+
+// Refuses what a run across ranks cannot do yet, at its case key.
+void refuse_on_ranks(const Model& model, const RunOptions& options, int ranks) {
+  const std::string tail = fmt::format(" in a run across MPI ranks ({}) are not there yet: run this case on one rank",
+                                       ranks);
+  if (model.checkpoint.enabled() || !options.restart.empty())
+    throw InputError(SourceLocation{model.case_file, 0, 0, "checkpoint"}, "checkpoints and restarts" + tail);
+}
+
 template <int D>
 RunSummary run_dimension(const Model& model, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const auto wall = [&start] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  Solver<D> solver(model);
+  const Communicator& comm = world();
+  std::unique_ptr<Ranks<D>> ranks;
+  if (comm.size() > 1) {
+    refuse_on_ranks(model, options, comm.size());
+    ranks = std::make_unique<Ranks<D>>(comm, model);
+  }
+  const bool writes = !ranks || ranks->writes();
+  std::unique_ptr<Solver<D>> solver_owner =
+      ranks ? std::make_unique<Solver<D>>(ranks->part) : std::make_unique<Solver<D>>(model);
+  Solver<D>& solver = *solver_owner;
+  // The snapshot the output reads: the solver's own, or on ranks the whole model's on rank 0
+  // (every rank takes part in assembling it; elsewhere it is empty and nothing reads it).
+  FieldSnapshot mine;
+  const auto snapshot = [&]() -> const FieldSnapshot& {
+    mine = solver.snapshot();
+    return ranks ? ranks->whole_snapshot.gather(ranks->part, mine) : mine;
+  };
   // Gauges are located in the mesh as given, on a fresh start as on a restart; a dynamic
   // relaxation then brings the model to rest, and t = 0 records that state.
   const bool relaxing = options.restart.empty() && model.run.relaxation.has_value();
-  RunOutput output(model, options, solver.snapshot(), !relaxing);
+  std::optional<RunOutput> output_owner;
+  {
+    const FieldSnapshot& initial = snapshot();
+    if (writes) output_owner.emplace(model, options, initial, !relaxing);
+  }
+  RunOutput* output = output_owner ? &*output_owner : nullptr;
+  const ProgressStyle style = writes ? options.progress : ProgressStyle::none;
   if (relaxing) {
     // A line every log interval (wall clock): a relaxation runs tens of thousands of cycles.
-    const bool report = options.progress != ProgressStyle::none;
+    const bool report = style != ProgressStyle::none;
     double next_line = model.output.log_interval_s;
-    const auto relaxed = solver.relax(*model.run.relaxation, [&](const Solver<D>::Relaxation& r) {
+    const auto relaxed = solver.relax(*model.run.relaxation, [&](const typename Solver<D>::Relaxation& r) {
       if (!report || wall() < next_line) return;
       next_line = wall() + model.output.log_interval_s;
       fmt::print(stderr,
@@ -44,27 +89,36 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
                  "{:.3g} of its peak\n",
                  r.time, r.cycles, wall(), r.kinetic_ratio);
     });
-    if (options.progress != ProgressStyle::none)
+    if (style != ProgressStyle::none)
       fmt::print(stderr,
                  "dynamic relaxation: at rest after {:.6g} s ({} cycles); kinetic energy {:.3g} of its peak "
                  "{:.6g} J\n",
                  relaxed.time, relaxed.cycles, relaxed.kinetic_ratio, relaxed.peak_kinetic);
-    output.write_initial(solver.snapshot());
+    const FieldSnapshot& rest = snapshot();
+    if (output) output->write_initial(rest);
   }
-  BarCsv<D> bar_csv(model, options, solver.bars());  // rebar strain histories
-  EnergyCsv<D> energy_csv(model, options, solver);   // energy history and its split
-  // Checkpoints and restarts: the solver's state, then the output's.
-  RunCheckpoints checkpoints(model, options, [&solver, &output](StateVisitor& v) {
-    solver.visit_state(v);
-    output.visit_state(v);
-  });
+  // Rebar strain histories and the energy history with its split: rank 0's (on ranks the
+  // solver's balance is the whole run's already).
+  std::optional<BarCsv<D>> bar_csv;
+  std::optional<EnergyCsv<D>> energy_csv;
+  if (writes) {
+    bar_csv.emplace(model, options, solver.bars());
+    energy_csv.emplace(model, options, solver);
+  }
+  // Checkpoints and restarts: the solver's state, then the output's (refused on ranks for now).
+  std::optional<RunCheckpoints> checkpoints;
+  if (!ranks)
+    checkpoints.emplace(model, options, [&solver, &output](StateVisitor& v) {
+      solver.visit_state(v);
+      output->visit_state(v);
+    });
   if (!options.restart.empty()) {
-    checkpoints.restart();
-    bar_csv.resume(solver.time(), solver.bars());
-    energy_csv.resume(solver);
+    checkpoints->restart();
+    bar_csv->resume(solver.time(), solver.bars());
+    energy_csv->resume(solver);
   }
   EnergyGuard<D> energy_guard(model.run, solver);
-  ProgressReporter progress(options.progress, model.run.end_time);
+  ProgressReporter progress(style, model.run.end_time);
   progress.set_log_interval(model.output.log_interval_s);
   progress.set_origin(solver.time(), wall());  // after a relaxation or at a restart's time
   RunSummary summary;
@@ -76,6 +130,10 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     summary.last_limit = solver.time_step_limit();
     summary.stop_reason = std::move(reason);
     summary.failed = failed;
+  };
+  const auto finish = [&] {
+    const FieldSnapshot& last = snapshot();
+    if (output) output->finish(last, summary);
   };
   const RunControl& run = model.run;
   // A step shorter than this fraction of the last one would only land on the
@@ -90,40 +148,63 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       }
       solver.limit_next_step(run.end_time - solver.time());
       solver.step();
-      output.after_cycle(solver.snapshot());
-      bar_csv.after_cycle(solver.time(), solver.bars());
-      energy_csv.after_cycle(solver);
-      if (const int signal = stop_requested()) {
-        checkpoints.write(solver.cycle(), solver.time());
-        summarise(fmt::format("interrupted by signal {}", signal), true);
-        output.finish(solver.snapshot(), summary);
-        throw RunInterrupted(
-            signal, fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
-                                signal, solver.cycle(), solver.time(), checkpoints.dir().string()));
+      int signal = stop_requested();
+      if (ranks) {
+        // One exchange a cycle carries what every rank must do alike: whether rank 0's output
+        // wants the fields now, and a signal any rank caught (mpirun passes SIGTERM to each, not
+        // necessarily within the same cycle).
+        const double flags[2] = {output && output->due(solver.time()) ? 1.0 : 0.0, static_cast<double>(signal)};
+        const std::vector<double> all = comm.all_gather(std::span<const double>(flags, 2));
+        bool due = false;
+        for (std::size_t r = 0; r < all.size(); r += 2) {
+          due = due || all[r] != 0.0;
+          signal = std::max(signal, static_cast<int>(all[r + 1]));
+        }
+        if (due) {
+          const FieldSnapshot& whole = snapshot();  // every rank takes part
+          if (output) output->after_cycle(whole);
+        }
+      } else {
+        output->after_cycle(snapshot());
       }
-      if (checkpoints.due(solver.cycle())) checkpoints.write(solver.cycle(), solver.time());
+      if (bar_csv) bar_csv->after_cycle(solver.time(), solver.bars());
+      if (energy_csv) energy_csv->after_cycle(solver);
+      if (signal) {
+        if (checkpoints) checkpoints->write(solver.cycle(), solver.time());
+        summarise(fmt::format("interrupted by signal {}", signal), true);
+        finish();
+        throw RunInterrupted(
+            signal, checkpoints ? fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
+                                              signal, solver.cycle(), solver.time(), checkpoints->dir().string())
+                                : fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s (no checkpoint: "
+                                              "checkpoints across MPI ranks are not there yet)",
+                                              signal, solver.cycle(), solver.time()));
+      }
+      if (checkpoints && checkpoints->due(solver.cycle())) checkpoints->write(solver.cycle(), solver.time());
       const EnergyBalance& energy = solver.energy();
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());
       energy_guard.after_cycle(solver);
     }
   } catch (const NumericalError& error) {
+    // On ranks every rank throws the same error at the same point of the cycle (the solver agrees
+    // on failures), so all of them take part in the last snapshot.
     progress.done();
-    checkpoints.write_failure(solver.cycle(), solver.time());
+    if (checkpoints) checkpoints->write_failure(solver.cycle(), solver.time());
     summarise(error.what(), true);
-    output.finish(solver.snapshot(), summary);
+    finish();
     throw;
   } catch (const std::filesystem::filesystem_error&) {
     // Output failed (disk full, folder gone): one last checkpoint attempt, then exit code 3.
     progress.done();
-    checkpoints.try_write(solver.cycle(), solver.time());
+    if (checkpoints) checkpoints->try_write(solver.cycle(), solver.time());
     throw;
   }
   progress.done();
   // SPH particles expanded past their smoothing-length cap weigh in their
   // neighbours' sums with a limited volume (sph_system.hpp, quadrature_density).
   if (const auto* particles = solver.particles();
-      particles && particles->volume_limited_count() > 0 && options.progress != ProgressStyle::none)
+      particles && particles->volume_limited_count() > 0 && style != ProgressStyle::none)
     fmt::print(stderr,
                "note: {} SPH particles end expanded past h_max_factor; their volume in the particle sums "
                "is limited (docs/theory/sph.md, \"Ejecta\")\n",
@@ -131,9 +212,9 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   // The final state, so that a later run can go on with a later end time or
   // more cycles; written before finish() adds its closing row and snapshot,
   // which the continued run would not have.
-  if (model.checkpoint.enabled()) checkpoints.write(solver.cycle(), solver.time());
+  if (checkpoints && model.checkpoint.enabled()) checkpoints->write(solver.cycle(), solver.time());
   summarise(reason, false);
-  output.finish(solver.snapshot(), summary);
+  finish();
   return summary;
 }
 

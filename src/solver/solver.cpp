@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace camouflet {
 
 template <int D>
-Solver<D>::Solver(const Model& model) : model_(model), mode_(model.run.mode), fem_(model) {
+Solver<D>::Solver(const Model& model, const RankPart* ranks)
+    : model_(model), mode_(model.run.mode), ranks_(ranks), fem_(model, ranks) {
   boundaries_ = Boundaries<D>(model, fem_);
   slides_ = SlideSurfaces<D>(model);
   boundaries_.constrain(fem_.velocity, 0.0);
@@ -58,6 +60,7 @@ void Solver<D>::start_energy_and_step() {
   energy_.internal = internal_energy_;
   // The hourglass energy a stiffness form stores: nought at t = 0 unless a relaxation stored some.
   energy_.initial_total = kinetic + internal_energy_ + package_hourglass_energy();
+  if (ranks_) reduce_energy(false);
 }
 
 template <int D>
@@ -67,8 +70,23 @@ void Solver<D>::limit_next_step(double dt_max) {
 
 template <int D>
 void Solver<D>::step() {
+  // On ranks a stage that fails on one rank must not leave the others waiting in the next
+  // exchange: each rank keeps its first failure, goes on through the step's exchanges (on a
+  // state nobody will use), and all learn of it before the time step (agree_on_failure).
+  std::optional<NumericalError> failure;
+  int failed_stage = 0;  // which of the guarded stages failed, in the order of the step
+  const auto guarded = [&](int stage_number, auto&& stage) {
+    if (!ranks_) return stage();
+    if (failure) return;
+    try {
+      stage();
+    } catch (NumericalError& error) {
+      failure = std::move(error);
+      failed_stage = stage_number;
+    }
+  };
   try {
-    check_packages();  // the state at t_n: a NaN is named before forces spread it
+    guarded(0, [&] { check_packages(); });  // the state at t_n: a NaN is named before forces spread it
     // Forces at t_n.
     begin_packages();                                        // FEM: force arrays zeroed, r-z ring factors
     boundaries_.add_loads(fem_, time_, fem_.ring_factor());  // face loads, before the element forces
@@ -83,12 +101,16 @@ void Solver<D>::step() {
     drift_packages();  // reverse order: SPH, then the FEM node pass; their centred kinetic energies
     account_energy();  // the energy balance at t_n
     advance_clock();   // t_(n+1), the cycle count, dt(n+1/2)
-    check_packages();  // every node and particle finite and inside the domain box
+    guarded(1, [&] { check_packages(); });  // every node and particle finite and inside the domain box
     // Kinematics and material state at t_(n+1), reverse order: SPH (eta, rho, h, D, W, material
     // update), then FEM (V, rho, D, W, q, materials, bars, erosion, sigma and wave speeds).
-    update_packages();
+    guarded(2, [&] { update_packages(); });
     follow_packages();    // the join follows the FEM erosion
     gather_energies();    // internal energy at t_(n+1), per package
+    if (ranks_) {  // the whole run's balance, and whether any rank failed (then every rank throws)
+      const bool any_failed = reduce_energy(failure.has_value());
+      if (any_failed) agree_on_failure(failure, failed_stage);
+    }
     choose_time_step();   // dt(n+3/2) = CFL min l / (c + |v|), growth limited
   } catch (NumericalError& error) {
     if (error.cycle() < 0) error.set_context(cycle_, time_, describe(error.kind(), error.id()));
@@ -138,6 +160,13 @@ void Solver<D>::account_energy() {
   e.kinetic = kinetic;
   e.internal = internal_energy_;
   e.hourglass = package_hourglass_energy();
+  // On ranks the shares are added up at the end of the step (reduce_energy), with the viscous
+  // and eroded energy the state update adds, as the serial balance holds them after the step.
+  if (!ranks_) set_relative_error(e);
+}
+
+template <int D>
+void Solver<D>::set_relative_error(EnergyBalance& e) {
   const double total = e.kinetic + e.internal + e.hourglass + e.eroded;
   const double scale = std::max(e.initial_total + std::abs(e.boundary_work), std::abs(total));
   e.relative_error = scale > 0.0 ? std::abs(total - e.initial_total - e.boundary_work) / scale : 0.0;
@@ -166,6 +195,7 @@ void Solver<D>::choose_time_step() {
       reason = vote.reason;
       setter = &vote;
     }
+  if (ranks_ && !reduce_time_step(dt, reason)) setter = nullptr;  // another rank's point set it
   dt_stable_ = std::min(dt, run.max_dt);
   // Hold the step while the limit sits within 2 % above it: a step that
   // follows |v| every cycle pumps energy in or out of a vibration (the

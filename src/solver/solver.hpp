@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "model/model.hpp"
 #include "solver/run.hpp"
 #include "model/package.hpp"
+#include "parallel/rank_part.hpp"
 #include "sph/sph_package.hpp"
 
 namespace camouflet {
@@ -34,7 +36,12 @@ class Solver {
   // Builds nodes, elements and one MaterialPoints batch per material from
   // the model. Throws InputError for an inverted element, a part without a
   // material or an unknown boundary set.
-  explicit Solver(const Model& model);
+  explicit Solver(const Model& model) : Solver(model, nullptr) {}
+  // This rank's part of a run across MPI ranks (parallel/rank_part.hpp): its cut model, stepped
+  // here, with the shared nodes' forces and masses added up over their holders (FemPackage), and
+  // the time step and the energy balance decided over every rank through part.comm(), the same
+  // bits on each. `part` must outlive the solver. Every rank constructs and steps together.
+  explicit Solver(const RankPart& part) : Solver(part.model(), &part) {}
 
   // One cycle: t_n -> t_{n+1}. Throws NumericalError (with cycle and time)
   // on a collapsed element, a non-finite state or a time-step collapse.
@@ -89,7 +96,8 @@ class Solver {
   std::int64_t first_axis_crossing_node() const { return fem_.reports().first_axis_node; }
   std::int64_t first_axis_crossing_cycle() const { return fem_.reports().first_axis_cycle; }
   const TimeStepLimit& time_step_limit() const { return limit_; }
-  const EnergyBalance& energy() const { return energy_; }
+  // The whole run's balance (on ranks: every rank's share added up in rank order).
+  const EnergyBalance& energy() const { return ranks_ ? global_energy_ : energy_; }
   // Where the energy sits and what the boundary work is made of (energy.csv).
   struct EnergySplit {
     double transmitting = 0.0;  // J, dashpot work (negative: energy radiated out)
@@ -107,7 +115,7 @@ class Solver {
     double bar_internal = 0.0;  // J, part of EnergyBalance::internal held by embedded bars
     double gravity = 0.0;       // J, work of gravity (the potential energy given up; solver/gravity.cpp)
   };
-  const EnergySplit& energy_split() const { return split_; }
+  const EnergySplit& energy_split() const { return ranks_ ? global_split_ : split_; }
   FieldSnapshot snapshot() const;
   // Every array and scalar of the run's state, for checkpoints (solver_state.cpp).
   void visit_state(StateVisitor& visitor);
@@ -132,6 +140,19 @@ class Solver {
   std::size_t eroded_count() const { return fem_.eroded_count; }
 
  private:
+  Solver(const Model& model, const RankPart* ranks);
+  // On ranks: global_energy_ and global_split_, every rank's shares added up in rank order, and
+  // their relative error (solver_ranks.cpp); whether any rank says it `failed` (one exchange).
+  bool reduce_energy(bool failed);
+  static void set_relative_error(EnergyBalance& e);
+  // On ranks: the smallest of every rank's step and the reason of the rank that holds it (the
+  // lowest on a tie); whether this rank holds it.
+  bool reduce_time_step(double& dt, std::string& reason) const;
+  // On ranks, when reduce_energy found that a rank failed (`failure` on it, at the step's guarded
+  // stage `stage`): every rank throws the error the serial run would have thrown, the earliest
+  // stage's with the lowest id (the lowest rank on a tie), named as its rank describes it.
+  void agree_on_failure(std::optional<NumericalError>& failure, int stage) const;
+
   // Stages of step() that are not loops over the packages, in order (the loops are in
   // package_stages.cpp, the couplings' in coupling_stages.cpp).
   void add_coupling_forces();
@@ -165,6 +186,7 @@ class Solver {
 
   const Model& model_;
   GeometryMode mode_;
+  const RankPart* ranks_ = nullptr;  // null on one rank (no communicator at all)
 
   FemPackage<D> fem_;  // nodes, elements, material batches, bars, erosion (fem/)
   // Every method in the order of their stages: FEM, the SPH particles (when the model has any),
@@ -192,8 +214,11 @@ class Solver {
   // driver's cuts: the slide surfaces' stiffness follows it (coupling/slide_surface.hpp).
   double dt_stable_ = 0.0;
   TimeStepLimit limit_;
+  // This rank's shares of the balance, accumulated step by step (the whole run's on one rank).
   EnergyBalance energy_;
   EnergySplit split_;
+  EnergyBalance global_energy_;  // on ranks: the shares added up (energy())
+  EnergySplit global_split_;
   double internal_energy_ = 0.0;  // J, sum m e at t_n: elements, particles and bars
 };
 

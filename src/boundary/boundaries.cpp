@@ -4,7 +4,9 @@ namespace camouflet {
 
 template <int D>
 Boundaries<D>::Boundaries(const Model& model, const FemPackage<D>& fem)
-    : conditions_(model), transmitting_(model, fem.elements), mirror_planes_(sph::particle_mirror_planes(model)) {}
+    : conditions_(model), transmitting_(model, fem.elements), mirror_planes_(sph::particle_mirror_planes(model)) {
+  if (fem.sharing()) transmitting_.share_nodes(fem.sharing(), fem.node_count());
+}
 
 template <int D>
 double Boundaries<D>::add_static_forces(FemPackage<D>& fem, double dt_old) const {
@@ -40,6 +42,9 @@ void Boundaries<D>::hold_initial_state(FemPackage<D>& fem, const std::array<doub
   if (fem.elements.area_weighted_momentum()) fem.elements.update_ring_factors(fem.position.data());
   fem.elements.add_internal_forces(fem.position.data(), fem.velocity.data(), unbalanced.data(), nullptr,
                                    fem.hourglass, 0.0);
+  // On ranks each holder of a node on a cut has its own elements' share: added up, before the
+  // weight of the whole node mass.
+  if (fem.sharing()) fem.sharing()->sum_shared(unbalanced, D);
   for (std::size_t n = 0; n < fem.node_mass.size(); ++n)
     for (int i = 0; i < D; ++i)
       unbalanced[n * D + static_cast<std::size_t>(i)] += fem.node_mass[n] * g[static_cast<std::size_t>(i)];

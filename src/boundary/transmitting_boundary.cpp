@@ -65,6 +65,17 @@ TransmittingBoundary<D>::TransmittingBoundary(const Model& model, const FemEleme
       faces_.push_back(face);
     }
   }
+  active_ = !faces_.empty();
+}
+
+template <int D>
+void TransmittingBoundary<D>::share_nodes(const NodeSharing* sharing, std::size_t node_count) {
+  sharing_ = sharing;
+  if (!sharing) return;
+  // A face set cut to this rank may be empty while another rank's is not (every rank reads the
+  // same conditions): any transmitting condition makes every rank take part.
+  active_ = true;
+  shared_damping_.assign(node_count * D * D, 0.0);
 }
 
 template <int D>
@@ -72,7 +83,7 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
                                      const FemElements<D>& elements,
                                      const std::vector<MaterialPoints>& batches, double dt) {
   constexpr int F = D == 2 ? 2 : 4;
-  if (nodes_.empty()) collect_nodes();
+  if (!collected_) collect_nodes();
   for (auto& c : damping_) c.fill(0.0);
   for (const Face& face : faces_) {
     const MaterialPoints& pts = batches[static_cast<std::size_t>(elements.material[face.element])];
@@ -124,10 +135,23 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
         }
     }
   }
+  if (sharing_) {  // a node on a cut: every rank's faces' damping, added up over its holders
+    constexpr std::size_t DD = D * D;
+    for (std::size_t k = 0; k < nodes_.size(); ++k)
+      std::copy(damping_[k].begin(), damping_[k].end(), &shared_damping_[static_cast<std::size_t>(nodes_[k]) * DD]);
+    sharing_->sum_shared(shared_damping_, D * D);
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+      double* c = &shared_damping_[static_cast<std::size_t>(nodes_[k]) * DD];
+      std::copy(c, c + DD, damping_[k].begin());
+      std::fill(c, c + DD, 0.0);
+    }
+  }
+  const char* owned = sharing_ ? sharing_->owned_nodes().data() : nullptr;
   // (m I + dt/2 C) v+ = m v_free - dt/2 C v-, node by node.
   double work = 0.0;
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const std::int64_t node = nodes_[k];
+    const bool counted = !owned || owned[node];
     const double m = node_mass[node];
     if (!(m > 0.0)) continue;
     const auto& c = damping_[k];
@@ -164,7 +188,7 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
     for (int i = 0; i < D; ++i) {
       double f = 0.0;
       for (int j = 0; j < D; ++j) f -= c[static_cast<std::size_t>(i * D + j)] * v_mid[j];
-      work += f * v_mid[i] * dt;
+      if (counted) work += f * v_mid[i] * dt;
       v[node * D + i] = sol[i];
     }
   }
@@ -173,7 +197,16 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
 
 template <int D>
 void TransmittingBoundary<D>::collect_nodes() {
+  collected_ = true;
   for (const Face& face : faces_) nodes_.insert(nodes_.end(), face.nodes.begin(), face.nodes.end());
+  if (sharing_) {  // and the shared nodes another rank's faces hold
+    const std::size_t nn = shared_damping_.size() / (D * D);
+    std::vector<double> on_face(nn, 0.0);
+    for (const std::int64_t n : nodes_) on_face[static_cast<std::size_t>(n)] = 1.0;
+    sharing_->sum_shared(on_face, 1);
+    for (std::size_t n = 0; n < nn; ++n)
+      if (on_face[n] > 0.0) nodes_.push_back(static_cast<std::int64_t>(n));
+  }
   std::sort(nodes_.begin(), nodes_.end());
   nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
   damping_.resize(nodes_.size());
@@ -181,7 +214,7 @@ void TransmittingBoundary<D>::collect_nodes() {
 
 template <int D>
 void TransmittingBoundary<D>::hold_initial_state(const double* unbalanced) {
-  if (nodes_.empty()) collect_nodes();
+  if (!collected_) collect_nodes();
   // The removed soil's traction sigma . n A on the face, lumped to the nodes as the element
   // forces are: taken as the nodal residual, it also carries the boundary half-elements' weight.
   static_force_.assign(nodes_.size(), {});
@@ -197,19 +230,20 @@ void TransmittingBoundary<D>::visit_state(StateVisitor& v) {
 
 template <int D>
 void TransmittingBoundary<D>::hold_still(double* v) {
-  if (nodes_.empty()) collect_nodes();
+  if (!collected_) collect_nodes();
   for (const std::int64_t n : nodes_)
     for (int i = 0; i < D; ++i) v[n * D + i] = 0.0;
 }
 
 template <int D>
 double TransmittingBoundary<D>::add_static_forces(const double* v_old, double dt_old, double* f) const {
+  const char* owned = sharing_ ? sharing_->owned_nodes().data() : nullptr;
   double work = 0.0;
   for (std::size_t k = 0; k < static_force_.size(); ++k)
     for (int i = 0; i < D; ++i) {
       const double fi = static_force_[k][i];
       f[nodes_[k] * D + i] += fi;
-      work += fi * v_old[nodes_[k] * D + i] * dt_old;
+      if (!owned || owned[nodes_[k]]) work += fi * v_old[nodes_[k] * D + i] * dt_old;
     }
   return work;
 }

@@ -25,6 +25,7 @@
 #include "fem/fem_elements.hpp"
 #include "materials/material_points.hpp"
 #include "model/model.hpp"
+#include "model/node_sharing.hpp"
 
 namespace camouflet {
 
@@ -38,7 +39,14 @@ class TransmittingBoundary {
   // face of one element.
   TransmittingBoundary(const Model& model, const FemElements<D>& elements);
 
-  bool empty() const { return faces_.empty(); }
+  // On one of several MPI ranks (model/node_sharing.hpp; before the first stage): a node on a
+  // cut takes the damping of every rank's faces that hold it (their dashpot matrices added up over
+  // the ranks), and its dashpot work and static hold's work count at its owner. Every rank then
+  // takes part in each stage whenever the model has a transmitting boundary, faces here or not.
+  void share_nodes(const NodeSharing* sharing, std::size_t node_count);
+
+  // No transmitting boundary to act (on ranks: none anywhere in the model).
+  bool empty() const { return !active_; }
   std::size_t face_count() const { return faces_.size(); }
 
   // After the velocity update: v (n*D) holds v_free, v_old = v(n-1/2); x the
@@ -71,8 +79,12 @@ class TransmittingBoundary {
   std::vector<std::int64_t> nodes_;                 // boundary nodes, sorted
   std::vector<std::array<double, D * D>> damping_;  // N s/m, per entry of nodes_
   std::vector<Vec<D>> static_force_;                // N, per entry of nodes_ (empty: none)
-  void collect_nodes();
+  void collect_nodes();  // nodes_ from the faces (on ranks, with the shared nodes other ranks' faces hold)
+  bool collected_ = false;
+  bool active_ = false;  // the model has transmitting faces (on ranks: on some rank)
   bool axisymmetric_ = false;
+  const NodeSharing* sharing_ = nullptr;
+  std::vector<double> shared_damping_;  // on ranks: per local node, D * D (zero but at nodes_ in damp)
 };
 
 extern template class TransmittingBoundary<2>;

@@ -89,6 +89,9 @@ class FemPackage final : public Package<D> {
   // elements' speeds from the node velocities and their gathered state. Throws NumericalError
   // for a non-finite element state.
   void start();
+  // On ranks: how this rank shares nodes with the others (null on one rank), for the boundaries
+  // that assemble node quantities from faces or elements.
+  const NodeSharing* sharing() const { return sharing_; }
   // On ranks: per local node, whether this rank counts it in global sums; null on one rank.
   const char* owned_nodes() const { return sharing_ ? sharing_->owned_nodes().data() : nullptr; }
   // The 1-based id a message gives a local node or element (0-based): its id in the whole mesh.

@@ -21,9 +21,6 @@ void refuse_what_does_not_cross_ranks(const Model& whole, int ranks) {
   if (!whole.contacts.empty()) throw InputError(whole.contacts.front().where, "an SPH-FEM contact" + tail);
   if (!whole.slide_surfaces.empty()) throw InputError(whole.slide_surfaces.front().where, "a slide surface" + tail);
   if (!whole.bars.empty()) throw InputError(whole.bars.front().where, "embedded bars" + tail);
-  for (const BoundaryCondition& bc : whole.boundaries)
-    if (bc.kind == BoundaryKind::transmitting)
-      throw InputError(bc.where, "a transmitting boundary (set '" + bc.set + "')" + tail);
 }
 
 }  // namespace

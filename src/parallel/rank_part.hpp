@@ -19,8 +19,8 @@ class RankPart final : public NodeSharing {
  public:
   // Every rank calls it with the same whole model (each partitions it alike: METIS's seed is
   // fixed). What does not cross ranks yet is refused with an InputError at its case key: SPH
-  // particles and what joins them to the mesh, slide surfaces, embedded bars and transmitting
-  // boundaries. `comm` must outlive the part.
+  // particles and what joins them to the mesh, slide surfaces and embedded bars. `comm` must
+  // outlive the part.
   RankPart(const Communicator& comm, const Model& whole);
 
   const Communicator& comm() const { return *comm_; }

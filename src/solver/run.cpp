@@ -36,14 +36,6 @@ struct Ranks {
   bool writes() const { return part.comm().rank() == 0; }
 };
 
-// Refuses what a run across ranks cannot do yet, at its case key.
-void refuse_on_ranks(const Model& model, const RunOptions& options, int ranks) {
-  const std::string tail = fmt::format(" in a run across MPI ranks ({}) are not there yet: run this case on one rank",
-                                       ranks);
-  if (model.checkpoint.enabled() || !options.restart.empty())
-    throw InputError(SourceLocation{model.case_file, 0, 0, "checkpoint"}, "checkpoints and restarts" + tail);
-}
-
 template <int D>
 RunSummary run_dimension(const Model& model, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -52,10 +44,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   };
   const Communicator& comm = world();
   std::unique_ptr<Ranks<D>> ranks;
-  if (comm.size() > 1) {
-    refuse_on_ranks(model, options, comm.size());
-    ranks = std::make_unique<Ranks<D>>(comm, model);
-  }
+  if (comm.size() > 1) ranks = std::make_unique<Ranks<D>>(comm, model);
   const bool writes = !ranks || ranks->writes();
   std::unique_ptr<Solver<D>> solver_owner =
       ranks ? std::make_unique<Solver<D>>(ranks->part) : std::make_unique<Solver<D>>(model);
@@ -105,17 +94,20 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     bar_csv.emplace(model, options, solver.bars());
     energy_csv.emplace(model, options, solver);
   }
-  // Checkpoints and restarts: the solver's state, then the output's (refused on ranks for now).
+  // Checkpoints and restarts: the solver's state, then the output's (on ranks each rank its own
+  // part of the solver's, rank 0 the output's).
   std::optional<RunCheckpoints> checkpoints;
-  if (!ranks)
-    checkpoints.emplace(model, options, [&solver, &output](StateVisitor& v) {
-      solver.visit_state(v);
-      output->visit_state(v);
-    });
+  checkpoints.emplace(
+      model, options,
+      [&solver, &output](StateVisitor& v) {
+        solver.visit_state(v);
+        if (output) output->visit_state(v);
+      },
+      ranks ? &comm : nullptr);
   if (!options.restart.empty()) {
     checkpoints->restart();
-    bar_csv->resume(solver.time(), solver.bars());
-    energy_csv->resume(solver);
+    if (bar_csv) bar_csv->resume(solver.time(), solver.bars());
+    if (energy_csv) energy_csv->resume(solver);
   }
   EnergyGuard<D> energy_guard(model.run, solver);
   ProgressReporter progress(style, model.run.end_time);
@@ -149,16 +141,20 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.limit_next_step(run.end_time - solver.time());
       solver.step();
       int signal = stop_requested();
+      bool checkpoint_due = checkpoints->due(solver.cycle());
       if (ranks) {
         // One exchange a cycle carries what every rank must do alike: whether rank 0's output
         // wants the fields now, and a signal any rank caught (mpirun passes SIGTERM to each, not
         // necessarily within the same cycle).
-        const double flags[2] = {output && output->due(solver.time()) ? 1.0 : 0.0, static_cast<double>(signal)};
-        const std::vector<double> all = comm.all_gather(std::span<const double>(flags, 2));
+        const double flags[3] = {output && output->due(solver.time()) ? 1.0 : 0.0, static_cast<double>(signal),
+                                 checkpoints->due(solver.cycle()) ? 1.0 : 0.0};
+        const std::vector<double> all = comm.all_gather(std::span<const double>(flags, 3));
         bool due = false;
-        for (std::size_t r = 0; r < all.size(); r += 2) {
+        checkpoint_due = false;  // a wall-clock interval elapses on each rank at its own moment
+        for (std::size_t r = 0; r < all.size(); r += 3) {
           due = due || all[r] != 0.0;
           signal = std::max(signal, static_cast<int>(all[r + 1]));
+          checkpoint_due = checkpoint_due || all[r + 2] != 0.0;
         }
         if (due) {
           const FieldSnapshot& whole = snapshot();  // every rank takes part
@@ -173,14 +169,11 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
         if (checkpoints) checkpoints->write(solver.cycle(), solver.time());
         summarise(fmt::format("interrupted by signal {}", signal), true);
         finish();
-        throw RunInterrupted(
-            signal, checkpoints ? fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
-                                              signal, solver.cycle(), solver.time(), checkpoints->dir().string())
-                                : fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s (no checkpoint: "
-                                              "checkpoints across MPI ranks are not there yet)",
-                                              signal, solver.cycle(), solver.time()));
+        throw RunInterrupted(signal, fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
+                                                 signal, solver.cycle(), solver.time(),
+                                                 (ranks ? checkpoints->dir().parent_path() : checkpoints->dir()).string()));
       }
-      if (checkpoints && checkpoints->due(solver.cycle())) checkpoints->write(solver.cycle(), solver.time());
+      if (checkpoint_due) checkpoints->write(solver.cycle(), solver.time());
       const EnergyBalance& energy = solver.energy();
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());

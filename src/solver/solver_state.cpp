@@ -48,6 +48,9 @@ void Solver<D>::visit_state(StateVisitor& v) {
   boundaries_.visit_state(v);  // loads, reactions, the transmitting boundaries' static hold
   // The join's interface is a function of the eroded flags (coupling/join_erosion.cpp).
   if (coupling_ && v.loading()) coupling_->follow_erosion();
+  // On ranks the whole run's balance is not kept: the restored shares added up again, by every
+  // rank at the same point of the restart.
+  if (ranks_ && v.loading()) reduce_energy(false);
 }
 
 template void Solver<2>::visit_state(StateVisitor&);

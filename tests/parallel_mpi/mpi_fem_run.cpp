@@ -89,7 +89,8 @@ double largest(const std::vector<double>& values) {
 
 // How far a run (`run`, its nodes and elements numbered by `node`, `element` in the whole mesh)
 // lies from the serial run: each field's largest difference over its largest serial value, the
-// energies' over the initial energy, the clock's over the time.
+// energies' over the largest of the initial energy and the serial run's terms, the clock's over the
+// time.
 struct Difference {
   double mass = 0.0, displacement = 0.0, velocity = 0.0, plastic_strain = 0.0, energy = 0.0, time = 0.0;
   bool same_bits = true;
@@ -116,14 +117,14 @@ Difference difference(const Solver<D>& run, const Solver<D>& serial, const std::
   for (std::size_t e = 0; e < element.size(); ++e) {
     const double a = p_run.plastic_strain[run.elements().point[e]];
     const double b = p_serial.plastic_strain[serial.elements().point[static_cast<std::size_t>(element[e])]];
-    d.plastic_strain = std::max(d.plastic_strain, std::abs(a - b) / eps_scale);
+    d.plastic_strain = std::max(d.plastic_strain, eps_scale > 0.0 ? std::abs(a - b) / eps_scale : std::abs(a - b));
     d.same_bits = d.same_bits && a == b;
   }
   const EnergyBalance &er = run.energy(), &es = serial.energy();
   d.energy = std::max({std::abs(er.kinetic - es.kinetic), std::abs(er.internal - es.internal),
                        std::abs(er.hourglass - es.hourglass), std::abs(er.boundary_work - es.boundary_work),
                        std::abs(er.initial_total - es.initial_total)}) /
-             es.initial_total;
+             std::max({es.initial_total, std::abs(es.kinetic), std::abs(es.internal), std::abs(es.boundary_work)});
   d.time = std::abs(run.time() - serial.time()) / serial.time();
   return d;
 }
@@ -141,21 +142,26 @@ std::string text(const Difference& d) {
                      d.same_bits ? " (bit-identical)" : "");
 }
 
+using VelocityField = std::vector<double> (*)(const std::vector<double>&);
+
+// Runs `model` serially, serially again with every initial velocity nudged by one ulp of
+// max(|v|, v_ref) (the problem's own response to round-off), and on the world's ranks; compares.
 template <int D>
-void compare_with_serial(GeometryMode mode) {
+void compare_with_serial(const Model& model, VelocityField velocity, double v_ref, const std::string& problem,
+                         bool plastic, double energy_error = 1e-3) {
   const Communicator& comm = world();
   test::use_threads(1);
-  const Model model = impact_model(mode);
 
   Solver<D> serial(model);
-  serial.set_initial_velocity(initial_velocity<D>(serial.position()));
+  serial.set_initial_velocity(velocity(serial.position()));
   for (std::int64_t c = 0; c < cycles; ++c) serial.step();
 
-  // The serial run's own sensitivity to round-off: the same run with every initial velocity one
-  // unit in the last place larger.
   Solver<D> nudged(model);
-  std::vector<double> v = initial_velocity<D>(nudged.position());
-  for (double& c : v) c = std::nextafter(c, c < 0.0 ? -HUGE_VAL : HUGE_VAL);
+  std::vector<double> v = velocity(nudged.position());
+  for (double& c : v) {
+    const double size = std::max(std::abs(c), v_ref);
+    c += (c < 0.0 ? -1.0 : 1.0) * (std::nextafter(size, HUGE_VAL) - size);
+  }
   nudged.set_initial_velocity(v);
   for (std::int64_t c = 0; c < cycles; ++c) nudged.step();
   std::vector<std::int64_t> all_nodes(serial.node_count()), all_elements(serial.elements().size());
@@ -165,7 +171,7 @@ void compare_with_serial(GeometryMode mode) {
 
   const RankPart part(comm, model);
   Solver<D> ranks(part);
-  ranks.set_initial_velocity(initial_velocity<D>(ranks.position()));
+  ranks.set_initial_velocity(velocity(ranks.position()));
   for (std::int64_t c = 0; c < cycles; ++c) ranks.step();
   ASSERT_EQ(ranks.cycle(), serial.cycle());
   const Difference d =
@@ -173,33 +179,75 @@ void compare_with_serial(GeometryMode mode) {
 
   if (comm.rank() == 0)
     std::printf("%d ranks, %s, %lld cycles: %s\n  serial nudged by one ulp: %s\n  energy error %.3g (serial %.3g)\n",
-                comm.size(), to_string(mode), static_cast<long long>(cycles), text(d).c_str(),
+                comm.size(), problem.c_str(), static_cast<long long>(cycles), text(d).c_str(),
                 text(round_off).c_str(), ranks.energy().relative_error, serial.energy().relative_error);
-  const bool within = d.mass < 1e-14 && d.displacement < 1e-12 && d.plastic_strain < 1e-12 && d.energy < 1e-12 &&
-                      d.time < 1e-12 && d.velocity < std::max(1e-12, 10.0 * round_off.velocity);
+  // Each field within 1e-12 of its largest value, or ten times what one ulp of the initial state
+  // does to the serial run itself where the problem grows round-off faster.
+  const auto bound = [](double nudge) { return std::max(1e-12, 10.0 * nudge); };
+  const bool within = d.mass < 1e-14 && d.displacement < bound(round_off.displacement) &&
+                      d.plastic_strain < bound(round_off.plastic_strain) && d.energy < bound(round_off.energy) &&
+                      d.time < bound(round_off.time) && d.velocity < bound(round_off.velocity);
   if (comm.rank() == 0)
-    test::record_check(fmt::format("FEM on {} MPI ranks, {} steel block impact, 400 cycles: fields against the "
-                                   "serial run",
-                                   comm.size(), to_string(mode)),
-                       "serial run; masses 1e-14, displacement, plastic strain, energies, time 1e-12 of their "
-                       "largest; velocity 10x the serial run's response to one ulp",
-                       text(d) + "; one ulp: velocity " + fmt::format("{:.2g}", round_off.velocity), within);
-  EXPECT_GT(largest(serial.batches()[0].plastic_strain), 0.1) << "the impact must yield the block";
+    test::record_check(fmt::format("FEM on {} MPI ranks, {}, {} cycles: fields against the serial run", comm.size(),
+                                   problem, cycles),
+                       "serial run; masses 1e-14; displacement, velocity, plastic strain, energies, time: 1e-12 "
+                       "of their largest, or 10x the serial run's own response to one ulp",
+                       text(d) + "; one ulp: " + text(round_off), within);
+  if (plastic) EXPECT_GT(largest(serial.batches()[0].plastic_strain), 0.1) << "the impact must yield the block";
   if (comm.size() == 1) EXPECT_TRUE(d.same_bits) << "one rank steps the serial run's mesh in its order";
-  // Masses: one addition of shares, 1e-14; the fields: within 1e-12 of their largest value, and
-  // the velocities (the noisiest field: the fixed face rings) within ten times what one ulp of
-  // the initial state does to the serial run itself, the problem's own round-off growth.
-  EXPECT_LT(d.mass, 1e-14);
-  EXPECT_LT(d.displacement, 1e-12);
-  EXPECT_LT(d.plastic_strain, 1e-12);
-  EXPECT_LT(d.energy, 1e-12);
-  EXPECT_LT(d.time, 1e-12);
-  EXPECT_LT(d.velocity, std::max(1e-12, 10.0 * round_off.velocity));
-  EXPECT_LT(ranks.energy().relative_error, 1e-3);
+  EXPECT_LT(d.mass, 1e-14);  // one addition of shares
+  EXPECT_LT(d.displacement, bound(round_off.displacement));
+  EXPECT_LT(d.plastic_strain, bound(round_off.plastic_strain));
+  EXPECT_LT(d.energy, bound(round_off.energy));
+  EXPECT_LT(d.time, bound(round_off.time));
+  EXPECT_LT(d.velocity, bound(round_off.velocity));
+  EXPECT_LT(ranks.energy().relative_error, energy_error);
 }
 
-TEST(MpiFemRun, HexImpactMatchesTheSerialRun) { compare_with_serial<3>(GeometryMode::three_d); }
-TEST(MpiFemRun, AxisymmetricImpactMatchesTheSerialRun) { compare_with_serial<2>(GeometryMode::axisymmetric); }
+// A soil column (1 x 1 x 10 m, 4 x 4 x 40 hexes, elastic), free, under gravity, its base loaded
+// by a 1 MPa pressure pulse (ramped over 0.5 ms, held 1.5 ms, released over 0.5 ms): the pulse runs
+// up and leaves through the transmitting top and one transmitting side, whose faces the partition
+// cuts; the side's dashpots and static hold act on nodes of every rank.
+//
+// Without node constraints: the serial balance of this column with its sides on symmetry planes
+// and its base pushed at a prescribed velocity is off by 17 % at 10 ms (nodes that carry both a
+// dashpot and a constraint; the same on one rank as on four), and a load switched on at t = 0 in
+// one step costs 7 % with the dashpots; this column's is 0.4 %.
+Model transmitting_column() {
+  Model model = test::block_model(GeometryMode::three_d, {BlockSpec{"c", 0, {0, 0, 0}, {1.0, 1.0, 10.0}, {4, 4, 40}}},
+                                  test::ElasticConstants{});
+  model.run.end_time = 1.0;
+  model.run.max_cycles = cycles;
+  model.run.gravity = {0.0, 0.0, -9.81};
+  // q on tr D: along the acceleration (the default) the column behind the pulse, straining where
+  // its acceleration passes through nought, takes q's direction from round-off, and the serial
+  // run moves by 5e-4 of its largest velocity when its initial velocities move by one ulp
+  // (docs/theory-fem.md, "Which compression d"); with tr D, by 6e-10.
+  model.run.viscosity_form = ViscosityForm::volumetric;
+  model.boundaries.push_back(test::pressure("c.zmin", 1e6, TimeHistory{{0.0, 5e-4, 2e-3, 2.5e-3}, {0.0, 1.0, 1.0, 0.0}}));
+  for (const char* open : {"c.zmax", "c.xmax"}) {
+    BoundaryCondition bc;
+    bc.kind = BoundaryKind::transmitting;
+    bc.set = open;
+    model.boundaries.push_back(bc);
+  }
+  return model;
+}
+
+std::vector<double> at_rest(const std::vector<double>& x) { return std::vector<double>(x.size(), 0.0); }
+
+TEST(MpiFemRun, TransmittingColumnMatchesTheSerialRun) {
+  compare_with_serial<3>(transmitting_column(), at_rest, 1.0, "3-D soil column, transmitting top and side", false,
+                         1e-2);
+}
+
+TEST(MpiFemRun, HexImpactMatchesTheSerialRun) {
+  compare_with_serial<3>(impact_model(GeometryMode::three_d), initial_velocity<3>, 100.0, "3-D steel block impact", true);
+}
+TEST(MpiFemRun, AxisymmetricImpactMatchesTheSerialRun) {
+  compare_with_serial<2>(impact_model(GeometryMode::axisymmetric), initial_velocity<2>, 100.0, "r-z steel block impact",
+                         true);
+}
 
 }  // namespace
 }  // namespace camouflet

@@ -1,7 +1,9 @@
 // Grind-time driver (docs/performance.md, "Targets"): an elastic 3-D block
 // of about 100k hex8 elements (or quad4 with --2d) hit by a velocity field,
 // stepped for a number of cycles; prints the wall time per element-cycle of
-// the whole explicit cycle. Threads follow OMP_NUM_THREADS.
+// the whole explicit cycle and the peak memory per element. Threads follow
+// OMP_NUM_THREADS; under mpirun the block is cut among the ranks
+// (docs/parallel.md) and rank 0 prints the whole run's figures.
 //   grind_time [--elements N] [--cycles K] [--2d]
 #include <omp.h>
 
@@ -16,6 +18,8 @@
 #include "materials/elastic_strength.hpp"
 #include "materials/linear_eos.hpp"
 #include "mesh/block_generator.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/rank_part.hpp"
 #include "solver/solver.hpp"
 
 using namespace camouflet;
@@ -54,28 +58,49 @@ Model elastic_block(int dimension, long elements) {
   return model;
 }
 
+// This process's peak resident memory (bytes; Linux's VmHWM), 0 when unknown.
+double peak_memory() {
+  std::FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return 0.0;
+  char line[256];
+  double kb = 0.0;
+  while (std::fgets(line, sizeof line, f))
+    if (!std::strncmp(line, "VmHWM:", 6)) kb = std::atof(line + 6);
+  std::fclose(f);
+  return kb * 1024.0;
+}
+
 template <int D>
 void run(long elements, int cycles) {
+  const Communicator& comm = world();
   const Model model = elastic_block(D, elements);
-  Solver<D> solver(model);
+  std::unique_ptr<RankPart> part;
+  if (comm.size() > 1) part = std::make_unique<RankPart>(comm, model);
+  std::unique_ptr<Solver<D>> owner = part ? std::make_unique<Solver<D>>(*part) : std::make_unique<Solver<D>>(model);
+  Solver<D>& solver = *owner;
   for (int k = 0; k < 3; ++k) solver.step();  // warm-up: first touch, caches
+  comm.barrier();
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
   for (int k = 0; k < cycles; ++k) solver.step();
+  comm.barrier();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  const double n = static_cast<double>(solver.elements().size());
-  // Wall time is the grind time; CPU time (all threads) tells a loaded machine apart.
-  std::printf(
-      "%s: %.0f elements, %d cycles, %d thread(s): %.1f ns per element-cycle wall, %.1f ns CPU "
-      "(energy error %.2e)\n",
-      D == 3 ? "hex8" : "quad4", n, cycles, omp_get_max_threads(), 1e9 * seconds / (n * cycles),
-      1e9 * cpu_seconds / (n * cycles), solver.energy().relative_error);
+  const double cpu_seconds = comm.sum(static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC);
+  const double n = static_cast<double>(model.mesh.element_count());
+  const double memory = comm.sum(peak_memory());  // every rank holds the whole model while it starts
+  // Wall time is the grind time; CPU time (all threads of all ranks) tells a loaded machine apart.
+  if (comm.rank() == 0)
+    std::printf(
+        "%s: %.0f elements, %d cycles, %d rank(s) x %d thread(s): %.1f ns per element-cycle wall, %.1f ns CPU, "
+        "peak memory %.0f bytes per element (energy error %.2e)\n",
+        D == 3 ? "hex8" : "quad4", n, cycles, comm.size(), omp_get_max_threads(), 1e9 * seconds / (n * cycles),
+        1e9 * cpu_seconds / (n * cycles), memory / n, solver.energy().relative_error);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  ParallelSession session(argc, argv);
   long elements = 100000;
   int cycles = 50;
   bool two_d = false;

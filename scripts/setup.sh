@@ -19,6 +19,7 @@ packages=(g++ cmake ninja-build pkg-config python3 python3-numpy python3-scipy p
           libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libtomlplusplus-dev libcli11-dev
           libeigen3-dev libgmsh-dev libhdf5-dev
           libopenmpi-dev openmpi-bin libmetis-dev  # runs across ranks (docs/parallel.md)
+          python3-vtk9  # the test that reads a run's .pvtu with VTK's own reader
           chromium)  # the test that opens a run's report.html as a reader would (scripts/report_in_browser.py)
 missing=()
 for p in "${packages[@]}"; do

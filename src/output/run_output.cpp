@@ -46,8 +46,12 @@ struct RunOutput::Impl {
   std::vector<double> row;
   std::vector<double> snapshot_times;  // s, of each snapshot written (the .pvd is rebuilt from them)
   bool restarting = false;             // write nothing until the checkpoint is loaded
+  int pieces = 0;                      // on MPI ranks: the pieces of each snapshot (.pvtu); 0: one .vtu
 
   explicit Impl(const Model& m) : model(m) {}
+  std::string mesh_name(int index) const {
+    return fmt::format("fields_{:04}.{}", index, pieces > 0 ? "pvtu" : "vtu");
+  }
 
   void sample(const FieldSnapshot& s) {
     for (std::size_t g = 0; g < located.size(); ++g) {
@@ -72,8 +76,14 @@ struct RunOutput::Impl {
   void snapshot(const FieldSnapshot& s) {
     last_field_cycle = s.cycle;
     if (dir.empty()) return;
-    const std::string mesh_file = fmt::format("fields_{:04}.vtu", snapshots);
-    if (s.element_count() > 0) {
+    const std::string mesh_file = mesh_name(snapshots);
+    if (pieces > 0) {  // the ranks wrote their pieces already (RunOutput::piece_path)
+      std::vector<std::string> sources;
+      for (int r = 0; r < pieces; ++r)
+        sources.push_back(RunOutput::piece_path({}, snapshots, r).generic_string());
+      write_mesh_pvtu(dir / mesh_file, sources);
+      pvd.add(s.time, 0, mesh_file);
+    } else if (s.element_count() > 0) {
       write_mesh_vtu(dir / mesh_file, s);
       pvd.add(s.time, 0, mesh_file);
     }
@@ -149,6 +159,28 @@ void RunOutput::after_cycle(const FieldSnapshot& state) {
     o.snapshot(state);
     while (o.next_field <= state.time * (1.0 + time_slack)) o.next_field += fi;
   }
+}
+
+void RunOutput::write_fields_in_pieces(int ranks) { impl_->pieces = ranks; }
+
+int RunOutput::snapshot_due(double time) const {
+  const Impl& o = *impl_;
+  const double fi = o.model.output.field_interval;
+  return !o.dir.empty() && fi > 0.0 && time >= o.next_field * (1.0 - time_slack) ? o.snapshots : -1;
+}
+
+int RunOutput::final_snapshot_due(std::int64_t cycle) const {
+  const Impl& o = *impl_;
+  return !o.dir.empty() && o.last_field_cycle != cycle ? o.snapshots : -1;
+}
+
+int RunOutput::initial_snapshot() const {
+  const Impl& o = *impl_;
+  return !o.dir.empty() && !o.restarting ? o.snapshots : -1;
+}
+
+fs::path RunOutput::piece_path(const fs::path& dir, int index, int rank) {
+  return dir / fmt::format("fields_{:04}", index) / fmt::format("piece_{}.vtu", rank);
 }
 
 bool RunOutput::due(double time) const {
@@ -243,7 +275,7 @@ void RunOutput::visit_state(StateVisitor& v) {
   o.pvd = PvdIndex();
   const bool mesh = o.model.mesh.element_count() > 0, particles = o.model.particles.count() > 0;
   for (std::size_t k = 0; k < o.snapshot_times.size(); ++k) {
-    if (mesh) o.pvd.add(o.snapshot_times[k], 0, fmt::format("fields_{:04}.vtu", k));
+    if (mesh) o.pvd.add(o.snapshot_times[k], 0, o.mesh_name(static_cast<int>(k)));
     if (particles) o.pvd.add(o.snapshot_times[k], 1, fmt::format("particles_{:04}.vtu", k));
   }
   if (!o.snapshot_times.empty()) o.pvd.write(o.dir / "fields.pvd");

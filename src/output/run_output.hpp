@@ -37,6 +37,18 @@ class RunOutput {
   // ranks assembles the whole model's fields only then).
   bool due(double time) const;
 
+  // A run across `ranks` MPI ranks (docs/parallel.md; before the first snapshot): each snapshot
+  // is a .pvtu joining fields_<k>/piece_<r>.vtu, which every rank writes before this one writes
+  // the .pvtu (piece_path). The snapshot passed in then serves the gauges alone.
+  void write_fields_in_pieces(int ranks);
+  // The index the next snapshot takes when after_cycle at `time` (or finish at `cycle`, or the
+  // initial snapshot) writes one, else -1: what the ranks must write their pieces for.
+  int snapshot_due(double time) const;
+  int final_snapshot_due(std::int64_t cycle) const;
+  int initial_snapshot() const;
+  // The piece of snapshot `index` that rank `rank` writes, in the output folder.
+  static std::filesystem::path piece_path(const std::filesystem::path& dir, int index, int rank);
+
   // Final snapshot, last gauge row and summary.json (also after a failure).
   void finish(const FieldSnapshot& final_state, const RunSummary& summary);
 

@@ -109,7 +109,8 @@ void points(Buffer& b, std::span<const double> position, std::size_t n, int dim)
 
 }  // namespace
 
-void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& s) {
+void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& s, std::span<const std::int64_t> node_id,
+                    std::span<const std::int64_t> element_id) {
   const int dim = s.dimension;
   const std::size_t n = s.node_count(), m = s.element_count();
   Buffer b;
@@ -119,6 +120,7 @@ void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& s) {
   vector_array(b, "velocity", s.node_velocity, n, dim);
   vector_array(b, "displacement", s.node_displacement, n, dim);
   vector_array(b, "acceleration", s.node_acceleration, n, dim);
+  if (!node_id.empty()) scalar_array(b, "Int64", "node_id", node_id, n);
   b += "      </PointData>\n";
   b += "      <CellData Scalars=\"pressure\" Tensors=\"stress\">\n";
   scalar_array(b, "Float64", "density", s.element_density, m);
@@ -128,10 +130,42 @@ void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& s) {
   scalar_array(b, "Float64", "temperature", s.element_temperature, m);
   scalar_array(b, "Float64", "damage", s.element_damage, m);
   scalar_array(b, "Int32", "material", s.element_material, m);
+  if (!element_id.empty()) scalar_array(b, "Int64", "element_id", element_id, m);
   b += "      </CellData>\n";
   points(b, s.node_position, n, dim);
   cells(b, s.connectivity, m, s.nodes_per_element, dim == 3 ? vtk_hexahedron : vtk_quad);
   footer(b);
+  write_file_atomically(path, b);
+}
+
+void write_mesh_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces) {
+  // The arrays of write_mesh_vtu's pieces, declared once.
+  Buffer b;
+  b += "<?xml version=\"1.0\"?>\n";
+  b += "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+       "header_type=\"UInt64\">\n";
+  b += "  <PUnstructuredGrid GhostLevel=\"0\">\n";
+  const auto array = [&b](const char* type, const char* name, int components) {
+    fmt::format_to(std::back_inserter(b), "        <PDataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"/>\n",
+                   type, name, components);
+  };
+  b += "      <PPointData Vectors=\"velocity\">\n";
+  for (const char* name : {"velocity", "displacement", "acceleration"}) array("Float64", name, 3);
+  array("Int64", "node_id", 1);
+  b += "      </PPointData>\n";
+  b += "      <PCellData Scalars=\"pressure\" Tensors=\"stress\">\n";
+  array("Float64", "density", 1);
+  array("Float64", "pressure", 1);
+  array("Float64", "stress", 6);
+  for (const char* name : {"plastic_strain", "temperature", "damage"}) array("Float64", name, 1);
+  array("Int32", "material", 1);
+  array("Int64", "element_id", 1);
+  b += "      </PCellData>\n";
+  b += "      <PPoints>\n";
+  array("Float64", "position", 3);
+  b += "      </PPoints>\n";
+  for (const std::string& piece : pieces) fmt::format_to(std::back_inserter(b), "    <Piece Source=\"{}\"/>\n", piece);
+  b += "  </PUnstructuredGrid>\n</VTKFile>\n";
   write_file_atomically(path, b);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Field snapshots for ParaView: VTK XML UnstructuredGrid files (ASCII data)
-// and the .pvd collection that indexes them by time.
+// and the .pvd collection that indexes them by time; on MPI ranks a piece per
+// rank and a .pvtu per snapshot that joins them (docs/parallel.md).
 //   mesh:      quads (VTK_QUAD) or hexes (VTK_HEXAHEDRON); point data velocity,
 //              displacement, acceleration; cell data density, pressure,
 //              stress (xx yy zz xy yz zx, ParaView's symmetric-tensor order),
@@ -8,7 +9,9 @@
 //   particles: one VTK_VERTEX cell per particle, the same quantities as point
 //              data, plus smoothing_length and neighbour_count.
 // 2-D coordinates are written with z = 0 (axisymmetric: x = r, y = z).
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,7 +19,13 @@
 
 namespace camouflet {
 
-void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& state);
+// With `node_id` and `element_id` (a piece of a run across MPI ranks: 1-based ids in the whole
+// mesh, one per node and element of the piece) they are written as point and cell data too.
+void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& state,
+                    std::span<const std::int64_t> node_id = {}, std::span<const std::int64_t> element_id = {});
+// The .pvtu that joins the pieces of one snapshot of a run across ranks (each a file written by
+// write_mesh_vtu with ids), `pieces` relative to the .pvtu's folder.
+void write_mesh_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces);
 void write_particle_vtu(const std::filesystem::path& path, const FieldSnapshot& state);
 
 // The .pvd index: one DataSet line per file; part 0 = mesh, 1 = particles.

@@ -4,12 +4,14 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "output/progress.hpp"
+#include "output/vtu_writer.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/rank_part.hpp"
 #include "parallel/whole_snapshot.hpp"
@@ -23,6 +25,8 @@
 
 namespace camouflet {
 
+namespace fs = std::filesystem;
+
 namespace {
 
 // On MPI ranks (docs/parallel.md): what each rank steps, and the whole model's snapshot that rank 0
@@ -30,9 +34,13 @@ namespace {
 // rank 0 writes files and progress lines.
 template <int D>
 struct Ranks {
-  Ranks(const Communicator& comm, const Model& whole) : part(comm, whole), whole_snapshot(whole) {}
+  Ranks(const Communicator& comm, const Model& whole) : part(comm, whole), whole_snapshot(whole) {
+    for (const std::int64_t n : part.local().global_node) node_ids.push_back(n + 1);
+    for (const std::int64_t e : part.local().global_element) element_ids.push_back(e + 1);
+  }
   RankPart part;
   WholeSnapshot whole_snapshot;
+  std::vector<std::int64_t> node_ids, element_ids;  // 1-based, in the whole mesh (the pieces' ids)
   bool writes() const { return part.comm().rank() == 0; }
 };
 
@@ -62,9 +70,37 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   std::optional<RunOutput> output_owner;
   {
     const FieldSnapshot& initial = snapshot();
-    if (writes) output_owner.emplace(model, options, initial, !relaxing);
+    // On ranks the first snapshot waits for the pieces (below).
+    if (writes) output_owner.emplace(model, options, initial, !relaxing && !ranks);
   }
   RunOutput* output = output_owner ? &*output_owner : nullptr;
+  // On ranks: every rank writes its piece of snapshot `index` (rank 0's decision, passed on here
+  // or in the cycle's exchange; -1: none), then all wait, so that the .pvtu rank 0 writes next
+  // names complete pieces.
+  const auto write_pieces = [&](int index) {
+    if (index < 0 || options.output_dir.empty()) return;
+    mine = solver.snapshot();
+    const fs::path path = RunOutput::piece_path(options.output_dir, index, comm.rank());
+    fs::create_directories(path.parent_path());
+    write_mesh_vtu(path, mine, ranks->node_ids, ranks->element_ids);
+    comm.barrier();
+  };
+  const auto shared_index = [&](int index_on_rank0) {
+    std::vector<char> bytes(sizeof(int));
+    std::memcpy(bytes.data(), &index_on_rank0, sizeof(int));
+    comm.broadcast(bytes, 0);
+    int index = -1;
+    std::memcpy(&index, bytes.data(), sizeof(int));
+    return index;
+  };
+  if (ranks) {
+    if (output) output->write_fields_in_pieces(comm.size());
+    if (!relaxing) {
+      write_pieces(shared_index(output ? output->initial_snapshot() : -1));
+      const FieldSnapshot& initial = snapshot();
+      if (output) output->write_initial(initial);
+    }
+  }
   const ProgressStyle style = writes ? options.progress : ProgressStyle::none;
   if (relaxing) {
     // A line every log interval (wall clock): a relaxation runs tens of thousands of cycles.
@@ -83,6 +119,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
                  "dynamic relaxation: at rest after {:.6g} s ({} cycles); kinetic energy {:.3g} of its peak "
                  "{:.6g} J\n",
                  relaxed.time, relaxed.cycles, relaxed.kinetic_ratio, relaxed.peak_kinetic);
+    if (ranks) write_pieces(shared_index(output ? output->initial_snapshot() : -1));
     const FieldSnapshot& rest = snapshot();
     if (output) output->write_initial(rest);
   }
@@ -124,6 +161,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     summary.failed = failed;
   };
   const auto finish = [&] {
+    if (ranks) write_pieces(shared_index(output ? output->final_snapshot_due(solver.cycle()) : -1));
     const FieldSnapshot& last = snapshot();
     if (output) output->finish(last, summary);
   };
@@ -146,16 +184,18 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
         // One exchange a cycle carries what every rank must do alike: whether rank 0's output
         // wants the fields now, and a signal any rank caught (mpirun passes SIGTERM to each, not
         // necessarily within the same cycle).
-        const double flags[3] = {output && output->due(solver.time()) ? 1.0 : 0.0, static_cast<double>(signal),
-                                 checkpoints->due(solver.cycle()) ? 1.0 : 0.0};
-        const std::vector<double> all = comm.all_gather(std::span<const double>(flags, 3));
+        const double flags[4] = {output && output->due(solver.time()) ? 1.0 : 0.0, static_cast<double>(signal),
+                                 checkpoints->due(solver.cycle()) ? 1.0 : 0.0,
+                                 output ? static_cast<double>(output->snapshot_due(solver.time())) : -1.0};
+        const std::vector<double> all = comm.all_gather(std::span<const double>(flags, 4));
         bool due = false;
         checkpoint_due = false;  // a wall-clock interval elapses on each rank at its own moment
-        for (std::size_t r = 0; r < all.size(); r += 3) {
+        for (std::size_t r = 0; r < all.size(); r += 4) {
           due = due || all[r] != 0.0;
           signal = std::max(signal, static_cast<int>(all[r + 1]));
           checkpoint_due = checkpoint_due || all[r + 2] != 0.0;
         }
+        write_pieces(static_cast<int>(all[3]));  // rank 0's
         if (due) {
           const FieldSnapshot& whole = snapshot();  // every rank takes part
           if (output) output->after_cycle(whole);

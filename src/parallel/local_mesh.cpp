@@ -87,7 +87,16 @@ LocalMesh local_mesh(const FemMesh& global, std::span<const int> part, int rank)
   for (std::size_t l = 0; l < local.global_node.size(); ++l)
     for (int r : holders[static_cast<std::size_t>(local.global_node[l])])
       if (r != rank) shared[r].push_back(static_cast<std::int64_t>(l));
-  for (auto& [r, list] : shared) local.neighbours.push_back({r, std::move(list)});
+  for (std::size_t l = 0; l < local.global_node.size(); ++l)
+    if (holders[static_cast<std::size_t>(local.global_node[l])].size() > 1)
+      local.shared_nodes.push_back(static_cast<std::int64_t>(l));
+  for (auto& [r, list] : shared) {
+    LocalMesh::Neighbour nb{r, std::move(list), {}};
+    for (const std::int64_t n : nb.nodes)
+      nb.slots.push_back(std::lower_bound(local.shared_nodes.begin(), local.shared_nodes.end(), n) -
+                         local.shared_nodes.begin());
+    local.neighbours.push_back(std::move(nb));
+  }
   return local;
 }
 
@@ -107,25 +116,20 @@ void sum_shared_nodes(const Communicator& comm, const LocalMesh& local, std::spa
   comm.exchange(ranks, sends, receives);
   // In ascending rank order: the ranks below this one, this one, the ranks above. A node's sum
   // starts from nought on every rank, so every holder adds the same values in the same order.
-  std::vector<double> total(values.size(), 0.0);
-  std::vector<char> shared(values.size() / c, 0);
-  for (const auto& nb : local.neighbours)
-    for (std::int64_t n : nb.nodes) shared[static_cast<std::size_t>(n)] = 1;
+  const std::size_t ns = local.shared_nodes.size();
+  std::vector<double> total(ns * c, 0.0);
   auto add_from = [&](std::size_t i) {
     const auto& nb = local.neighbours[i];
     for (std::size_t j = 0; j < nb.nodes.size(); ++j)
-      for (std::size_t k = 0; k < c; ++k)
-        total[static_cast<std::size_t>(nb.nodes[j]) * c + k] += receives[i][j * c + k];
+      for (std::size_t k = 0; k < c; ++k) total[static_cast<std::size_t>(nb.slots[j]) * c + k] += receives[i][j * c + k];
   };
   std::size_t i = 0;
   for (; i < local.neighbours.size() && local.neighbours[i].rank < comm.rank(); ++i) add_from(i);
-  for (std::size_t n = 0; n < shared.size(); ++n)
-    if (shared[n])
-      for (std::size_t k = 0; k < c; ++k) total[n * c + k] += values[n * c + k];
+  for (std::size_t s = 0; s < ns; ++s)
+    for (std::size_t k = 0; k < c; ++k) total[s * c + k] += values[static_cast<std::size_t>(local.shared_nodes[s]) * c + k];
   for (; i < local.neighbours.size(); ++i) add_from(i);
-  for (std::size_t n = 0; n < shared.size(); ++n)
-    if (shared[n])
-      for (std::size_t k = 0; k < c; ++k) values[n * c + k] = total[n * c + k];
+  for (std::size_t s = 0; s < ns; ++s)
+    for (std::size_t k = 0; k < c; ++k) values[static_cast<std::size_t>(local.shared_nodes[s]) * c + k] = total[s * c + k];
 }
 
 }  // namespace camouflet

@@ -20,8 +20,12 @@ struct LocalMesh {
   struct Neighbour {
     int rank = 0;
     std::vector<std::int64_t> nodes;
+    std::vector<std::int64_t> slots;  // each node's index in shared_nodes
   };
   std::vector<Neighbour> neighbours;
+  // Every local node another rank holds too, ascending: what sum_shared_nodes touches (its work and
+  // memory go with the cut, not with the mesh).
+  std::vector<std::int64_t> shared_nodes;
   // Whether this rank owns each local node: the lowest rank holding it owns it, and only the owner
   // counts it in a global sum (kinetic energy, output), so no shared node is counted twice.
   std::vector<char> owned;

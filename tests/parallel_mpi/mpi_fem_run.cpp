@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -234,7 +235,33 @@ Model transmitting_column() {
   return model;
 }
 
+// The Lame thick cylinder of tests/solver/test_lame_cylinder.cpp (r-z, a = 0.1 m < r < b = 0.2 m,
+// axial motion held by symmetry planes), two rows of 20 quads so that the partition cuts across
+// and along the wall, the internal pressure of 1 MPa ramped as (1 - cos) over 8 breathing periods
+// (400 cycles reach about a third of the ramp).
+Model lame_cylinder() {
+  const test::ElasticConstants c;
+  const double a = 0.1, b = 0.2;
+  Model model = test::block_model(GeometryMode::axisymmetric, {BlockSpec{"tube", 0, {a, 0, 0}, {b - a, 0.01, 0}, {20, 2, 1}}}, c);
+  model.run.end_time = 1.0;
+  model.run.max_cycles = cycles;
+  model.boundaries.push_back(test::symmetry("tube.ymin", {0, 1, 0}));
+  model.boundaries.push_back(test::symmetry("tube.ymax", {0, 1, 0}));
+  const double ramp = 8.0 * 2.0 * std::numbers::pi * 0.5 * (a + b) / c.p_wave_speed();
+  TimeHistory history;
+  for (int k = 0; k <= 40; ++k) {
+    history.time.push_back(ramp * k / 40.0);
+    history.value.push_back(0.5 * (1.0 - std::cos(std::numbers::pi * k / 40.0)));
+  }
+  model.boundaries.push_back(test::pressure("tube.xmin", 1e6, history));
+  return model;
+}
+
 std::vector<double> at_rest(const std::vector<double>& x) { return std::vector<double>(x.size(), 0.0); }
+
+TEST(MpiFemRun, LameCylinderMatchesTheSerialRun) {
+  compare_with_serial<2>(lame_cylinder(), at_rest, 1.0, "r-z Lame thick cylinder", false);
+}
 
 TEST(MpiFemRun, TransmittingColumnMatchesTheSerialRun) {
   compare_with_serial<3>(transmitting_column(), at_rest, 1.0, "3-D soil column, transmitting top and side", false,

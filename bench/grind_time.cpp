@@ -4,7 +4,7 @@
 // the whole explicit cycle and the peak memory per element. Threads follow
 // OMP_NUM_THREADS; under mpirun the block is cut among the ranks
 // (docs/parallel.md) and rank 0 prints the whole run's figures.
-//   grind_time [--elements N] [--cycles K] [--2d]
+//   grind_time [--elements N] [--cycles K] [--2d] [--preset MATERIAL]   (default: elastic rock)
 #include <omp.h>
 
 #include <chrono>
@@ -14,9 +14,11 @@
 #include <cstring>
 #include <ctime>
 #include <memory>
+#include <string>
 
 #include "materials/elastic_strength.hpp"
 #include "materials/linear_eos.hpp"
+#include "materials/registry.hpp"
 #include "mesh/block_generator.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/rank_part.hpp"
@@ -26,7 +28,7 @@ using namespace camouflet;
 
 namespace {
 
-Model elastic_block(int dimension, long elements) {
+Model elastic_block(int dimension, long elements, const std::string& preset) {
   Model model;
   model.run.mode = dimension == 3 ? GeometryMode::three_d : GeometryMode::plane_strain;
   model.run.end_time = 1.0;
@@ -42,9 +44,14 @@ Model elastic_block(int dimension, long elements) {
     block.size = {2.0, 1.0, 0.0};
   }
   add_block(model.mesh, block);
-  auto eos = std::make_shared<const LinearEos>(2000.0, 2.0e9);
-  auto strength = std::make_shared<const ElasticStrength>(1.5e9);
-  model.materials.push_back({"rock", std::make_shared<const Material>("rock", eos, strength), {}});
+  if (preset.empty()) {
+    auto eos = std::make_shared<const LinearEos>(2000.0, 2.0e9);
+    auto strength = std::make_shared<const ElasticStrength>(1.5e9);
+    model.materials.push_back({"rock", std::make_shared<const Material>("rock", eos, strength), {}});
+  } else {  // a registered material preset (soil, concrete, steel): what an element of it costs
+    model.materials.push_back(
+        {preset, make_material(preset, preset, SourceLocation{"", 0, 0, "--preset"}, {}, {}, {}), {}});
+  }
   Part part;
   part.name = "block";
   part.material = 0;
@@ -71,9 +78,9 @@ double peak_memory() {
 }
 
 template <int D>
-void run(long elements, int cycles) {
+void run(long elements, int cycles, const std::string& preset) {
   const Communicator& comm = world();
-  const Model model = elastic_block(D, elements);
+  const Model model = elastic_block(D, elements, preset);
   std::unique_ptr<RankPart> part;
   if (comm.size() > 1) part = std::make_unique<RankPart>(comm, model);
   std::unique_ptr<Solver<D>> owner = part ? std::make_unique<Solver<D>>(*part) : std::make_unique<Solver<D>>(model);
@@ -91,9 +98,9 @@ void run(long elements, int cycles) {
   // Wall time is the grind time; CPU time (all threads of all ranks) tells a loaded machine apart.
   if (comm.rank() == 0)
     std::printf(
-        "%s: %.0f elements, %d cycles, %d rank(s) x %d thread(s): %.1f ns per element-cycle wall, %.1f ns CPU, "
+        "%s%s%s: %.0f elements, %d cycles, %d rank(s) x %d thread(s): %.1f ns per element-cycle wall, %.1f ns CPU, "
         "peak memory %.0f bytes per element (energy error %.2e)\n",
-        D == 3 ? "hex8" : "quad4", n, cycles, comm.size(), omp_get_max_threads(), 1e9 * seconds / (n * cycles),
+        D == 3 ? "hex8" : "quad4", preset.empty() ? "" : " ", preset.c_str(), n, cycles, comm.size(), omp_get_max_threads(), 1e9 * seconds / (n * cycles),
         1e9 * cpu_seconds / (n * cycles), memory / n, solver.energy().relative_error);
 }
 
@@ -104,6 +111,7 @@ int main(int argc, char** argv) {
   long elements = 100000;
   int cycles = 50;
   bool two_d = false;
+  std::string preset;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--elements") && i + 1 < argc)
       elements = std::atol(argv[++i]);
@@ -111,14 +119,16 @@ int main(int argc, char** argv) {
       cycles = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--2d"))
       two_d = true;
+    else if (!std::strcmp(argv[i], "--preset") && i + 1 < argc)
+      preset = argv[++i];
     else {
-      std::fprintf(stderr, "usage: grind_time [--elements N] [--cycles K] [--2d]\n");
+      std::fprintf(stderr, "usage: grind_time [--elements N] [--cycles K] [--2d] [--preset MATERIAL]\n");
       return 2;
     }
   }
   if (two_d)
-    run<2>(elements, cycles);
+    run<2>(elements, cycles, preset);
   else
-    run<3>(elements, cycles);
+    run<3>(elements, cycles, preset);
   return 0;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "parallel/element_weights.hpp"
 #include "parallel/partition.hpp"
 
 namespace camouflet {
@@ -27,7 +28,8 @@ void refuse_what_does_not_cross_ranks(const Model& whole, int ranks) {
 
 RankPart::RankPart(const Communicator& comm, const Model& whole) : comm_(&comm) {
   refuse_what_does_not_cross_ranks(whole, comm.size());
-  const std::vector<int> part = partition_elements(whole.mesh, comm.size());
+  // Balanced by what the elements cost (a concrete element several elastic ones), not by count.
+  const std::vector<int> part = partition_elements(whole.mesh, comm.size(), element_weights(whole));
   local_ = local_mesh(whole.mesh, part, comm.rank());
   // Everything but the mesh is the whole model's: materials, parts, boundaries by set name (the
   // sets cut to this rank, possibly empty), detonation points, erosion, the run's controls.

@@ -6,17 +6,17 @@
 namespace camouflet {
 
 double relative_cost(const Material& material) {
-  // CPU time per element-cycle of a 21k-hex block hit at 10 m/s, one thread, medians of three
-  // alternated runs (058815e, 7 Dec 2026, beside a build): elastic 234 ns, steel_1006_wang2005
-  // (linear + johnson_cook) 270, sandy_clay_wang2005 (three_phase_soil + soil_drucker_prager +
-  // its bond damage) 387, concrete_35mpa_wang2005 (p_alpha + rht) 1343. Each extra is carried by
-  // the strength model its presets pair it with.
+  // Time per element-cycle of a 21k-hex block hit at 10 m/s, one thread, on an idle 2-vCPU host,
+  // medians of alternated runs (7 Dec 2026, bench/grind_time --preset): elastic 229.5 ns,
+  // steel_1006_wang2005 (linear + johnson_cook) 310.9, sandy_clay_wang2005 (three_phase_soil +
+  // soil_drucker_prager + its bond damage) 407.5, concrete_35mpa_wang2005 (p_alpha + rht) 1345.3.
+  // Each extra is carried by the strength model its presets pair it with.
   double cost = 1.0;
   if (const StrengthModel* strength = material.strength()) {
     const std::string type = strength->type();
-    if (type == "johnson_cook") cost += 0.15;
-    if (type == "soil_drucker_prager") cost += 0.65;
-    if (type == "rht") cost += 4.7;
+    if (type == "johnson_cook") cost += 0.35;
+    if (type == "soil_drucker_prager") cost += 0.78;
+    if (type == "rht") cost += 4.86;
   }
   return cost;
 }

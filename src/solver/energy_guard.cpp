@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "parallel/communicator.hpp"
+
 namespace camouflet {
 
 // kinetic + internal + hourglass + eroded - initial = boundary_work, and the
@@ -41,7 +43,7 @@ void EnergyGuard<D>::after_cycle(const Solver<D>& solver) {
     return;
   }
   if (!(error > limit_)) {
-    if (!warned_)
+    if (!warned_ && world().rank() == 0)  // on ranks every rank holds the same balance: said once
       fmt::print(stderr,
                  "warning: relative energy error {:.3e} at cycle {}, time {:.6g} s is past half of "
                  "energy_error_limit {:.3e} (energy.csv has the terms)\n",

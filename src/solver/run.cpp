@@ -32,7 +32,6 @@ namespace {
 // On MPI ranks (docs/parallel.md): what each rank steps, and the whole model's snapshot that rank 0
 // writes. Every rank walks through run_dimension alike, so that their exchanges pair up; only
 // rank 0 writes files and progress lines.
-template <int D>
 struct Ranks {
   Ranks(const Communicator& comm, const Model& whole) : part(comm, whole), whole_snapshot(whole) {
     for (const std::int64_t n : part.local().global_node) node_ids.push_back(n + 1);
@@ -51,8 +50,8 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   const Communicator& comm = world();
-  std::unique_ptr<Ranks<D>> ranks;
-  if (comm.size() > 1) ranks = std::make_unique<Ranks<D>>(comm, model);
+  std::unique_ptr<Ranks> ranks;
+  if (comm.size() > 1) ranks = std::make_unique<Ranks>(comm, model);
   const bool writes = !ranks || ranks->writes();
   std::unique_ptr<Solver<D>> solver_owner =
       ranks ? std::make_unique<Solver<D>>(ranks->part) : std::make_unique<Solver<D>>(model);

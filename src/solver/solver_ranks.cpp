@@ -1,12 +1,12 @@
-// The solver's global decisions on ranks (solver.hpp; docs/parallel.md): the energy balance and
-// the time step over every rank of a run spread over several, each taken from every rank's share
-// in rank order, so that every rank holds the same bits.
+// The solver's global decisions on ranks (solver.hpp; docs/parallel.md): the energy balance, the
+// time step and a failure over every rank of a run spread over several, each taken from every
+// rank's share in rank order, so that every rank holds the same bits.
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
-#include <limits>
 #include <vector>
 
 #include "solver/solver.hpp"
@@ -15,8 +15,8 @@ namespace camouflet {
 
 namespace {
 
-// Every summed term of the balance and of its split, in one fixed order, to add up over ranks
-// in one gather. `pack` reads them into `values`; `unpack` writes `values` back.
+// Every summed term of the balance and of its split, in one fixed order: the addresses of one
+// balance's terms, so that a rank's shares and the whole run's pair up term by term.
 template <class Split>
 void terms(EnergyBalance& e, Split& s, std::vector<double*>& out) {
   out = {&e.kinetic, &e.internal, &e.hourglass, &e.viscous, &e.boundary_work, &e.eroded, &e.initial_total,

@@ -22,11 +22,13 @@ typename Boundaries<D>::Work Boundaries<D>::constrain(FemPackage<D>& fem, double
   if (!transmitting_.empty() && relaxing) {
     transmitting_.hold_still(fem.velocity.data());
   } else if (!transmitting_.empty()) {
-    work.transmitting = transmitting_.damp(fem.position.data(), fem.velocity_old.data(), fem.velocity.data(),
-                                           fem.node_mass.data(), fem.elements, fem.batches, dt_mean);
+    transmitting_.damp(fem.position.data(), fem.velocity_old.data(), fem.velocity.data(), fem.node_mass.data(),
+                       fem.elements, fem.batches, dt_mean);
   }
   const double reaction_work = conditions_.constrain(fem.velocity.data(), fem.velocity_old.data(),
                                                      fem.node_mass.data(), time, dt_old, dt_mean, fem.owned_nodes());
+  if (!transmitting_.empty() && !relaxing)
+    work.transmitting = transmitting_.work(fem.velocity_old.data(), fem.velocity.data(), dt_mean);
   work.constraints = reaction_work + conditions_.load_work(fem.velocity_old.data(), dt_old);
   return work;
 }

@@ -79,7 +79,7 @@ void TransmittingBoundary<D>::share_nodes(const NodeSharing* sharing, std::size_
 }
 
 template <int D>
-double TransmittingBoundary<D>::damp(const double* x, const double* v_old, double* v, const double* node_mass,
+void TransmittingBoundary<D>::damp(const double* x, const double* v_old, double* v, const double* node_mass,
                                      const FemElements<D>& elements,
                                      const std::vector<MaterialPoints>& batches, double dt) {
   constexpr int F = D == 2 ? 2 : 4;
@@ -146,12 +146,9 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
       std::fill(c, c + DD, 0.0);
     }
   }
-  const char* owned = sharing_ ? sharing_->owned_nodes().data() : nullptr;
   // (m I + dt/2 C) v+ = m v_free - dt/2 C v-, node by node.
-  double work = 0.0;
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const std::int64_t node = nodes_[k];
-    const bool counted = !owned || owned[node];
     const double m = node_mass[node];
     if (!(m > 0.0)) continue;
     const auto& c = damping_[k];
@@ -182,15 +179,28 @@ double TransmittingBoundary<D>::damp(const double* x, const double* v_old, doubl
                    det;
       }
     }
-    // Dashpot force at t_n and its work over the step: -C v_n . v_n dt.
+    // Dashpot force at t_n, -C v_n; its work over the step once the constraints have acted
+    // (work()): on a node a constraint holds too, the velocity the dashpot's impulse leaves is
+    // not the one the node moves with.
     double v_mid[D];
     for (int i = 0; i < D; ++i) v_mid[i] = 0.5 * (v_old[node * D + i] + sol[i]);
     for (int i = 0; i < D; ++i) {
       double f = 0.0;
       for (int j = 0; j < D; ++j) f -= c[static_cast<std::size_t>(i * D + j)] * v_mid[j];
-      if (counted) work += f * v_mid[i] * dt;
+      force_[k][i] = f;
       v[node * D + i] = sol[i];
     }
+  }
+}
+
+template <int D>
+double TransmittingBoundary<D>::work(const double* v_old, const double* v, double dt) const {
+  const char* owned = sharing_ ? sharing_->owned_nodes().data() : nullptr;
+  double work = 0.0;
+  for (std::size_t k = 0; k < force_.size(); ++k) {
+    const std::int64_t node = nodes_[k];
+    if (owned && !owned[node]) continue;
+    for (int i = 0; i < D; ++i) work += force_[k][i] * (0.5 * (v_old[node * D + i] + v[node * D + i])) * dt;
   }
   return work;
 }
@@ -210,6 +220,7 @@ void TransmittingBoundary<D>::collect_nodes() {
   std::sort(nodes_.begin(), nodes_.end());
   nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
   damping_.resize(nodes_.size());
+  force_.assign(nodes_.size(), {});
 }
 
 template <int D>

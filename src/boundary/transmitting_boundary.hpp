@@ -51,9 +51,12 @@ class TransmittingBoundary {
 
   // After the velocity update: v (n*D) holds v_free, v_old = v(n-1/2); x the
   // geometry at t_n. Replaces v by v(n+1/2) with the centred dashpot forces of
-  // the elements' latest impedance. Returns their work over dt (J, <= 0).
-  double damp(const double* x, const double* v_old, double* v, const double* node_mass,
+  // the elements' latest impedance (their work: work(), after the constraints).
+  void damp(const double* x, const double* v_old, double* v, const double* node_mass,
               const FemElements<D>& elements, const std::vector<MaterialPoints>& batches, double dt);
+  // The work of the last damp's dashpot forces over dt against the velocities the nodes move with
+  // after every constraint has acted, (v_old + v) / 2 (J, <= 0 where no constraint interferes).
+  double work(const double* v_old, const double* v, double dt) const;
 
   // During a dynamic relaxation (solver/dynamic_relaxation.cpp): the boundary nodes held at
   // rest in place of the dashpots, as the soil beyond them is. A boundary that carried its t = 0
@@ -79,6 +82,7 @@ class TransmittingBoundary {
   std::vector<std::int64_t> nodes_;                 // boundary nodes, sorted
   std::vector<std::array<double, D * D>> damping_;  // N s/m, per entry of nodes_
   std::vector<Vec<D>> static_force_;                // N, per entry of nodes_ (empty: none)
+  std::vector<Vec<D>> force_;                       // N, the last damp's dashpot forces, per entry of nodes_
   void collect_nodes();  // nodes_ from the faces (on ranks, with the shared nodes other ranks' faces hold)
   bool collected_ = false;
   bool active_ = false;  // the model has transmitting faces (on ranks: on some rank)

@@ -4,8 +4,8 @@
 #include <omp.h>
 
 #include <chrono>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -132,8 +132,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   }
   // Checkpoints and restarts: the solver's state, then the output's (on ranks each rank its own
   // part of the solver's, rank 0 the output's).
-  std::optional<RunCheckpoints> checkpoints;
-  checkpoints.emplace(
+  RunCheckpoints checkpoints(
       model, options,
       [&solver, &output](StateVisitor& v) {
         solver.visit_state(v);
@@ -141,7 +140,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       },
       ranks ? &comm : nullptr);
   if (!options.restart.empty()) {
-    checkpoints->restart();
+    checkpoints.restart();
     if (bar_csv) bar_csv->resume(solver.time(), solver.bars());
     if (energy_csv) energy_csv->resume(solver);
   }
@@ -178,13 +177,13 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       solver.limit_next_step(run.end_time - solver.time());
       solver.step();
       int signal = stop_requested();
-      bool checkpoint_due = checkpoints->due(solver.cycle());
+      bool checkpoint_due = checkpoints.due(solver.cycle());
       if (ranks) {
         // One exchange a cycle carries what every rank must do alike: whether rank 0's output
         // wants the fields now, and a signal any rank caught (mpirun passes SIGTERM to each, not
         // necessarily within the same cycle).
         const double flags[4] = {output && output->due(solver.time()) ? 1.0 : 0.0, static_cast<double>(signal),
-                                 checkpoints->due(solver.cycle()) ? 1.0 : 0.0,
+                                 checkpoint_due ? 1.0 : 0.0,
                                  output ? static_cast<double>(output->snapshot_due(solver.time())) : -1.0};
         const std::vector<double> all = comm.all_gather(std::span<const double>(flags, 4));
         bool due = false;
@@ -205,14 +204,14 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       if (bar_csv) bar_csv->after_cycle(solver.time(), solver.bars());
       if (energy_csv) energy_csv->after_cycle(solver);
       if (signal) {
-        if (checkpoints) checkpoints->write(solver.cycle(), solver.time());
+        checkpoints.write(solver.cycle(), solver.time());
         summarise(fmt::format("interrupted by signal {}", signal), true);
         finish();
         throw RunInterrupted(signal, fmt::format("interrupted by signal {} at cycle {}, time {:.6g} s; checkpoint in {}",
                                                  signal, solver.cycle(), solver.time(),
-                                                 (ranks ? checkpoints->dir().parent_path() : checkpoints->dir()).string()));
+                                                 (ranks ? checkpoints.dir().parent_path() : checkpoints.dir()).string()));
       }
-      if (checkpoint_due) checkpoints->write(solver.cycle(), solver.time());
+      if (checkpoint_due) checkpoints.write(solver.cycle(), solver.time());
       const EnergyBalance& energy = solver.energy();
       progress.update(solver.time(), solver.cycle(), solver.time_step_limit().dt,
                       solver.time_step_limit().reason, energy.relative_error, wall());
@@ -222,14 +221,14 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     // On ranks every rank throws the same error at the same point of the cycle (the solver agrees
     // on failures), so all of them take part in the last snapshot.
     progress.done();
-    if (checkpoints) checkpoints->write_failure(solver.cycle(), solver.time());
+    checkpoints.write_failure(solver.cycle(), solver.time());
     summarise(error.what(), true);
     finish();
     throw;
   } catch (const std::filesystem::filesystem_error&) {
     // Output failed (disk full, folder gone): one last checkpoint attempt, then exit code 3.
     progress.done();
-    if (checkpoints) checkpoints->try_write(solver.cycle(), solver.time());
+    checkpoints.try_write(solver.cycle(), solver.time());
     throw;
   }
   progress.done();
@@ -244,7 +243,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   // The final state, so that a later run can go on with a later end time or
   // more cycles; written before finish() adds its closing row and snapshot,
   // which the continued run would not have.
-  if (checkpoints && model.checkpoint.enabled()) checkpoints->write(solver.cycle(), solver.time());
+  if (model.checkpoint.enabled()) checkpoints.write(solver.cycle(), solver.time());
   summarise(reason, false);
   finish();
   return summary;

@@ -13,10 +13,12 @@
 // so that the lateral stress vanishes. docs/theory/reinforcement.md, section 2.
 #include "core/state_visitor.hpp"
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "materials/material_points.hpp"
+#include "model/bar_hosts.hpp"
 #include "model/model.hpp"
 
 namespace camouflet {
@@ -28,12 +30,25 @@ class EmbeddedBars {
 
   EmbeddedBars() = default;
   // Locates every bar node in an element of its host part in the initial
-  // coordinates x0. Throws InputError (naming the bar set) for a node outside
+  // coordinates x0 (model/bar_hosts.hpp). Throws InputError (naming the bar set) for a node outside
   // its host part, a degenerate segment or a hoop bar outside axisymmetric mode.
   EmbeddedBars(const Model& model, const std::vector<double>& x0);
+  // One rank's share of the bars in a run across ranks (docs/parallel.md), from the bar nodes
+  // located in the whole mesh: with `hosted_here` (per bar node: this rank's elements host it) the
+  // rank steps the segments whose first node it hosts and counts the mass of the bar nodes it
+  // hosts; host nodes are renumbered by `global_nodes` (this rank's local node -> the whole mesh's,
+  // ascending), which must hold every host node of those segments. Without it: every bar, the
+  // whole mesh's numbering.
+  EmbeddedBars(const Model& model, const BarHosts& hosts, const std::vector<char>* hosted_here,
+               std::span<const std::int64_t> global_nodes);
 
-  bool empty() const { return segment_node_.empty(); }
-  std::size_t segment_count() const { return segment_set_.size(); }
+  // Nothing held here: no segment stepped and no bar node's mass counted.
+  bool empty() const { return node_mass_.empty(); }
+  std::size_t segment_count() const { return segment_set_.size(); }  // stepped here
+  std::size_t whole_segment_count() const { return total_segments_; }  // of the whole model
+  // Segment s (stepped here) in the whole model's segments (set after set), and within its set.
+  std::size_t whole_segment(std::size_t s) const { return segment_whole_[s]; }
+  std::size_t segment_in_set(std::size_t s) const { return segment_in_set_[s]; }
 
   // node_mass (per host node) += N_a m_b for every bar node b.
   void add_masses(std::vector<double>& node_mass) const;
@@ -81,11 +96,14 @@ class EmbeddedBars {
   // Bar nodes: host element nodes and shape-function weights.
   std::vector<std::int64_t> host_node_;  // b * host_nodes + a
   std::vector<double> weight_;           // b * host_nodes + a
-  std::vector<double> node_mass_;        // kg, per bar node
+  std::vector<double> node_mass_;        // kg, per bar node (0 where another rank counts it)
   // Segments.
   std::vector<std::size_t> segment_node_;  // 2 per segment
   std::vector<std::size_t> segment_set_;
   std::vector<std::size_t> segment_point_;  // index in its set's points
+  std::vector<std::size_t> segment_in_set_;  // 0-based, along its set from `from`
+  std::vector<std::size_t> segment_whole_;   // 0-based, in the whole model's segments
+  std::size_t total_segments_ = 0;
   std::vector<double> segment_mass_;        // kg
   std::vector<double> reference_length_;    // m, L0 (hoop: r0)
   std::vector<double> axial_strain_;

@@ -36,12 +36,10 @@ void FemPackage<D>::add_element_forces(double dt_previous) {
       elements.add_internal_forces(position.data(), velocity.data(), force.data(), f_hourglass, hourglass, dt_previous);
   // The viscous hourglass forces stay each rank's own share: their work (drift_nodes) is the sum
   // of the shares' over the ranks, as the serial sum is over the elements.
-  if (sharing_) sharing_->sum_shared(force, D);
-}
-
-template <int D>
-void FemPackage<D>::add_bar_forces() {
+  // The bars' before the sum: on ranks a segment is stepped by one rank, its host nodes held by
+  // others too.
   if (!bars.empty()) bars.add_forces(position.data(), force.data());
+  if (sharing_) sharing_->sum_shared(force, D);
 }
 
 template <int D>

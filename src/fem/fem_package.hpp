@@ -33,7 +33,8 @@ class FemPackage final : public Package<D> {
   // On one of several ranks (`sharing`; model/node_sharing.hpp) the model's mesh is this rank's
   // part: the masses and momenta of the nodes it shares are added up over their holders here,
   // the forces at every step (add_forces), and messages name the whole mesh's ids. Embedded
-  // bars are refused there (InputError): their forces and masses do not cross ranks yet.
+  // bars there are the rank's share (NodeSharing::bar_share): their masses and forces join the
+  // sums of the shared nodes.
   explicit FemPackage(const Model& model, const NodeSharing* sharing = nullptr);
 
   std::size_t node_count() const { return node_mass.size(); }
@@ -44,16 +45,13 @@ class FemPackage final : public Package<D> {
   // of r-z area-weighted momentum from x(t_n), which the boundaries' loads use (ring_factor()).
   void begin_step(const StepClock& clock) override;
   // Element stresses less q and hourglass resistance (clock.dt advances the stiffness-form
-  // displacements); on ranks, then the forces of shared nodes (with the loads the boundaries
-  // added before) added up over their holders, so that gravity, added after, counts once.
+  // displacements), then the embedded bars' forces on their host nodes; on ranks, then the forces
+  // of shared nodes (with the loads the boundaries added before) added up over their holders, so
+  // that gravity, added after, counts once.
   void add_forces(const StepClock& clock) override { add_element_forces(clock.dt); }
   void add_gravity(const std::array<double, 3>& g, double& power) override;
-  // The embedded bars onto their host nodes, then v(n+1/2) = v(n-1/2) + F/m dt_mean (a kept,
-  // v(n-1/2) kept as velocity_old).
-  void kick(const StepClock& clock) override {
-    add_bar_forces();
-    kick_nodes(clock.dt_mean());
-  }
+  // v(n+1/2) = v(n-1/2) + F/m dt_mean (a kept, v(n-1/2) kept as velocity_old).
+  void kick(const StepClock& clock) override { kick_nodes(clock.dt_mean()); }
   // The node pass: x(n+1), each node tested finite and inside the run's domain box (check()
   // reports the first that is not), the nodes' centred kinetic energy at t_n and the viscous
   // hourglass work from t_(n-1) to t_n.
@@ -141,7 +139,6 @@ class FemPackage final : public Package<D> {
   void set_geostatic_state();  // fem_package_setup.cpp
   // The parts of the stages (fem_package.cpp).
   void add_element_forces(double dt_previous);
-  void add_bar_forces();
   void kick_nodes(double dt_mean);
   struct Drift {
     double kinetic = 0.0;        // J, the nodes' at t_n

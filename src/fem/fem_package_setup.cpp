@@ -103,11 +103,18 @@ FemPackage<D>::FemPackage(const Model& model, const NodeSharing* sharing) : mode
 
   // Bars take their hosts' velocity: their mass joins the nodes after the
   // initial velocities are set, so the parts' initial velocities stay exact.
-  if (sharing && !model.bars.empty())
-    throw InputError(model.bars.front().where,
-                     "embedded bars in a run across MPI ranks are not there yet: run this case on one rank");
-  bars = EmbeddedBars<D>(model, position);
-  bars.add_masses(node_mass);
+  // On ranks each rank spreads the bar nodes its elements host, and the shares of shared nodes
+  // are added up (the same sums on one rank as serially).
+  if (const BarShare* share = sharing ? sharing->bar_share() : nullptr)
+    bars = EmbeddedBars<D>(model, share->hosts, &share->hosted_here, sharing->global_nodes());
+  else
+    bars = EmbeddedBars<D>(model, position);
+  if (!model.bars.empty()) {
+    std::vector<double> bar_mass(nn, 0.0);
+    bars.add_masses(bar_mass);
+    if (sharing) sharing->sum_shared(bar_mass, 1);
+    for (std::size_t n = 0; n < nn; ++n) node_mass[n] += bar_mass[n];
+  }
   for (const auto& criteria : model.erosion) {
     erosion = erosion || criteria.enabled();
     if (criteria.geometric_strain > 0.0) total_strain.assign(ne, SymTensor{});

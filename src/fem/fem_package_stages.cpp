@@ -184,7 +184,7 @@ typename Package<D>::Vote FemPackage<D>::vote() const {
     if (t < vote.dt || !(t >= 0.0)) {
       vote = {};
       vote.dt = t;
-      vote.reason = fmt::format("bar '{}' segment {}: L/c", bars.set_name(s), s + 1);
+      vote.reason = fmt::format("bar '{}' segment {}: L/c", bars.set_name(s), bars.segment_in_set(s) + 1);
     }
   }
   return vote;

@@ -12,6 +12,8 @@
 #include <span>
 #include <vector>
 
+#include "model/bar_hosts.hpp"
+
 namespace camouflet {
 
 class NodeSharing {
@@ -25,6 +27,8 @@ class NodeSharing {
   // Local node / element (0-based) -> its index in the whole mesh, ascending.
   virtual const std::vector<std::int64_t>& global_nodes() const = 0;
   virtual const std::vector<std::int64_t>& global_elements() const = 0;
+  // The embedded bars' share of this rank (model/bar_hosts.hpp); nullptr when the model has none.
+  virtual const BarShare* bar_share() const { return nullptr; }
 };
 
 }  // namespace camouflet

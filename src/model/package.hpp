@@ -63,7 +63,7 @@ class Package {
   virtual void add_gravity(const std::array<double, 3>& g, double& power) = 0;
 
   // v(n+1/2) = v(n-1/2) + a clock.dt_mean(), and the package's own constraints (after the
-  // boundaries' static forces: FEM adds its embedded bars' forces first).
+  // boundaries' static forces).
   virtual void kick(const StepClock& clock) = 0;
 
   // Its kinetic energy at t_n in the form the central difference conserves

@@ -12,7 +12,8 @@
 
 namespace camouflet {
 
-LocalMesh local_mesh(const FemMesh& global, std::span<const int> part, int rank) {
+LocalMesh local_mesh(const FemMesh& global, std::span<const int> part, int rank,
+                     std::span<const std::vector<std::int64_t>> extra_nodes) {
   const std::size_t elements = global.element_count(), nodes = global.node_count();
   if (part.size() != elements)
     throw std::invalid_argument(fmt::format("local_mesh: {} parts for {} elements", part.size(), elements));
@@ -28,6 +29,11 @@ LocalMesh local_mesh(const FemMesh& global, std::span<const int> part, int rank)
     for (std::size_t a = 0; a < npe; ++a) {
       auto& h = holders[static_cast<std::size_t>(global.connectivity[e * npe + a])];
       if (std::find(h.begin(), h.end(), part[e]) == h.end()) h.push_back(part[e]);
+    }
+  for (std::size_t r = 0; r < extra_nodes.size(); ++r)
+    for (const std::int64_t n : extra_nodes[r]) {
+      auto& h = holders[static_cast<std::size_t>(n)];
+      if (std::find(h.begin(), h.end(), static_cast<int>(r)) == h.end()) h.push_back(static_cast<int>(r));
     }
   for (auto& h : holders) std::sort(h.begin(), h.end());
 

@@ -33,7 +33,11 @@ struct LocalMesh {
 
 // Rank `rank`'s part of `global` under the partition `part` (one rank per element, 0-based).
 // Node sets keep their local nodes; a face set keeps the faces of this rank's elements.
-LocalMesh local_mesh(const FemMesh& global, std::span<const int> part, int rank);
+// `extra_nodes[r]` (when given, one list per rank) are nodes of the whole mesh rank r holds beside
+// those of its elements (the host nodes its embedded bars reach): they are shared like any other,
+// and rank r steps them from the forces and masses the other holders add up.
+LocalMesh local_mesh(const FemMesh& global, std::span<const int> part, int rank,
+                     std::span<const std::vector<std::int64_t>> extra_nodes = {});
 
 // Adds up, over the ranks that hold each shared node, the `components` values per node in
 // `values` (local nodes * components), in ascending rank order, so that every rank holding the

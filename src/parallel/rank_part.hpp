@@ -19,7 +19,7 @@ class RankPart final : public NodeSharing {
  public:
   // Every rank calls it with the same whole model (each partitions it alike: METIS's seed is
   // fixed). What does not cross ranks yet is refused with an InputError at its case key: SPH
-  // particles and what joins them to the mesh, slide surfaces and embedded bars. `comm` must
+  // particles and what joins them to the mesh, and slide surfaces. `comm` must
   // outlive the part.
   RankPart(const Communicator& comm, const Model& whole);
 
@@ -34,10 +34,12 @@ class RankPart final : public NodeSharing {
   const std::vector<char>& owned_nodes() const override { return local_.owned; }
   const std::vector<std::int64_t>& global_nodes() const override { return local_.global_node; }
   const std::vector<std::int64_t>& global_elements() const override { return local_.global_element; }
+  const BarShare* bar_share() const override { return bars_.hosts.node_count() > 0 ? &bars_ : nullptr; }
 
  private:
   const Communicator* comm_;
   LocalMesh local_;
+  BarShare bars_;
   Model model_;
 };
 

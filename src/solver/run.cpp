@@ -122,14 +122,11 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     const FieldSnapshot& rest = snapshot();
     if (output) output->write_initial(rest);
   }
-  // Rebar strain histories and the energy history with its split: rank 0's (on ranks the
-  // solver's balance is the whole run's already).
-  std::optional<BarCsv<D>> bar_csv;
+  // Rebar strain histories (on ranks every rank's part: each row is gathered to rank 0) and the
+  // energy history with its split (rank 0's: on ranks the solver's balance is the whole run's).
+  BarCsv<D> bar_csv(model, options, solver.bars(), &comm);
   std::optional<EnergyCsv<D>> energy_csv;
-  if (writes) {
-    bar_csv.emplace(model, options, solver.bars());
-    energy_csv.emplace(model, options, solver);
-  }
+  if (writes) energy_csv.emplace(model, options, solver);
   // Checkpoints and restarts: the solver's state, then the output's (on ranks each rank its own
   // part of the solver's, rank 0 the output's).
   RunCheckpoints checkpoints(
@@ -141,7 +138,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       ranks ? &comm : nullptr);
   if (!options.restart.empty()) {
     checkpoints.restart();
-    if (bar_csv) bar_csv->resume(solver.time(), solver.bars());
+    bar_csv.resume(solver.time(), solver.bars());
     if (energy_csv) energy_csv->resume(solver);
   }
   EnergyGuard<D> energy_guard(model.run, solver);
@@ -201,7 +198,7 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
       } else {
         output->after_cycle(snapshot());
       }
-      if (bar_csv) bar_csv->after_cycle(solver.time(), solver.bars());
+      bar_csv.after_cycle(solver.time(), solver.bars());
       if (energy_csv) energy_csv->after_cycle(solver);
       if (signal) {
         checkpoints.write(solver.cycle(), solver.time());

@@ -90,12 +90,12 @@ void Solver<D>::step() {
     // Forces at t_n.
     begin_packages();                                        // FEM: force arrays zeroed, r-z ring factors
     boundaries_.add_loads(fem_, time_, fem_.ring_factor());  // face loads, before the element forces
-    add_package_forces();          // FEM: element stresses and hourglass control; SPH: the particle sums
+    add_package_forces();          // FEM: element stresses, hourglass control, bars; SPH: the particle sums
     add_coupling_forces();         // the join's reactions and the sliding contact (coupling/)
     add_gravity();                 // m g on every package's points, and its work (gravity.cpp)
     add_static_boundary_forces();  // the transmitting boundaries' static hold (gravity.cpp)
     // Velocities at t_(n+1/2).
-    kick_packages();         // FEM: its bars' forces, a = F / m, v(n+1/2); SPH: v(n+1/2), pair heating
+    kick_packages();         // FEM: a = F / m, v(n+1/2); SPH: v(n+1/2), pair heating
     constrain_velocities();  // dashpots, fixed, prescribed, symmetry, axis; the join settles
     // Energies at t_n and positions at t_(n+1).
     drift_packages();  // reverse order: SPH, then the FEM node pass; their centred kinetic energies

@@ -17,10 +17,13 @@ import numpy as np
 
 
 def quantity(column):
-    """'p2.velocity_x' -> 'velocity'; 'energy.kinetic' -> 'energy'; 'time_s' -> 'time_s'."""
+    """'p2.velocity_x' -> 'velocity'; 'energy.kinetic' -> 'energy'; 'time_s' -> 'time_s';
+    'bottom.3.axial_stress' (bars.csv: bar, segment, quantity) -> 'axial_stress'."""
     name = column.split(".", 1)[-1] if column.startswith("p") or column.startswith("m") else column
     if column.startswith("energy."):
         return "energy" if column != "energy.relative_error" else "relative_error"
+    if column.count(".") == 2:
+        return column.rsplit(".", 1)[-1]
     return re.sub(r"_(x|y|z|xx|yy|zz|xy|yz|zx|r|theta)$", "", name)
 
 

@@ -24,10 +24,13 @@
 #include <string>
 #include <vector>
 
+#include "case/case_reader.hpp"
 #include "common/fem_models.hpp"
 #include "common/verification.hpp"
+#include "mesh/rebar_layers.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/rank_part.hpp"
+#include "solver/rc_models.hpp"
 #include "solver/solver.hpp"
 
 namespace camouflet {
@@ -94,6 +97,7 @@ double largest(const std::vector<double>& values) {
 // time.
 struct Difference {
   double mass = 0.0, displacement = 0.0, velocity = 0.0, plastic_strain = 0.0, energy = 0.0, time = 0.0;
+  double bar_stress = 0.0;  // embedded bars' axial stress, over the largest serial one
   bool same_bits = true;
 };
 
@@ -113,13 +117,26 @@ Difference difference(const Solver<D>& run, const Solver<D>& serial, const std::
       d.same_bits = d.same_bits && a == b && va == vb;
     }
   }
-  const MaterialPoints &p_run = run.batches()[0], &p_serial = serial.batches()[0];
-  const double eps_scale = largest(p_serial.plastic_strain);
+  // Plastic strains of every material, each over its own largest.
   for (std::size_t e = 0; e < element.size(); ++e) {
+    const auto ge = static_cast<std::size_t>(element[e]);
+    const MaterialPoints& p_run = run.batches()[static_cast<std::size_t>(run.elements().material[e])];
+    const MaterialPoints& p_serial = serial.batches()[static_cast<std::size_t>(serial.elements().material[ge])];
+    const double eps_scale = largest(p_serial.plastic_strain);
     const double a = p_run.plastic_strain[run.elements().point[e]];
-    const double b = p_serial.plastic_strain[serial.elements().point[static_cast<std::size_t>(element[e])]];
+    const double b = p_serial.plastic_strain[serial.elements().point[ge]];
     d.plastic_strain = std::max(d.plastic_strain, eps_scale > 0.0 ? std::abs(a - b) / eps_scale : std::abs(a - b));
     d.same_bits = d.same_bits && a == b;
+  }
+  // The bar segments this run steps, by their place in the whole model's (the serial run's index).
+  double sigma_scale = 0.0;
+  for (std::size_t s = 0; s < serial.bars().segment_count(); ++s)
+    sigma_scale = std::max(sigma_scale, std::abs(serial.bars().axial_stress(s)));
+  for (std::size_t s = 0; s < run.bars().segment_count(); ++s) {
+    const double a = run.bars().axial_stress(s), b = serial.bars().axial_stress(run.bars().whole_segment(s));
+    d.bar_stress = std::max(d.bar_stress, std::abs(a - b) / sigma_scale);
+    d.same_bits = d.same_bits && a == b && run.bars().plastic_strain(s) ==
+                                               serial.bars().plastic_strain(run.bars().whole_segment(s));
   }
   const EnergyBalance &er = run.energy(), &es = serial.energy();
   d.energy = std::max({std::abs(er.kinetic - es.kinetic), std::abs(er.internal - es.internal),
@@ -133,20 +150,24 @@ Difference difference(const Solver<D>& run, const Solver<D>& serial, const std::
 Difference worst_over_ranks(const Communicator& comm, const Difference& d) {
   return {comm.max(d.mass).value,          comm.max(d.displacement).value, comm.max(d.velocity).value,
           comm.max(d.plastic_strain).value, comm.max(d.energy).value,       comm.max(d.time).value,
-          !comm.any(!d.same_bits)};
+          comm.max(d.bar_stress).value,     !comm.any(!d.same_bits)};
 }
 
 std::string text(const Difference& d) {
   return fmt::format("mass {:.2g}, displacement {:.2g}, velocity {:.2g}, plastic strain {:.2g}, energy {:.2g}, "
-                     "time {:.2g}{}",
+                     "time {:.2g}{}{}",
                      d.mass, d.displacement, d.velocity, d.plastic_strain, d.energy, d.time,
+                     d.bar_stress > 0.0 ? fmt::format(", bar stress {:.2g}", d.bar_stress) : std::string(),
                      d.same_bits ? " (bit-identical)" : "");
 }
 
 using VelocityField = std::vector<double> (*)(const std::vector<double>&);
 
-// Runs `model` serially, serially again with every initial velocity nudged by one ulp of
-// max(|v|, v_ref) (the problem's own response to round-off), and on the world's ranks; compares.
+// Runs `model` serially, serially twice more with every initial velocity component nudged by one
+// ulp of max(|v|, v_ref), up and down in turn and then down and up (the problem's own response to
+// round-off, the larger of the two: a pattern that strains the elements as a different order of
+// sums does, where a nudge of one sign would move a body at rest rigidly and strain nothing), and
+// on the world's ranks; compares.
 template <int D>
 void compare_with_serial(const Model& model, VelocityField velocity, double v_ref, const std::string& problem,
                          bool plastic, double energy_error = 1e-3) {
@@ -157,18 +178,29 @@ void compare_with_serial(const Model& model, VelocityField velocity, double v_re
   serial.set_initial_velocity(velocity(serial.position()));
   for (std::int64_t c = 0; c < cycles; ++c) serial.step();
 
-  Solver<D> nudged(model);
-  std::vector<double> v = velocity(nudged.position());
-  for (double& c : v) {
-    const double size = std::max(std::abs(c), v_ref);
-    c += (c < 0.0 ? -1.0 : 1.0) * (std::nextafter(size, HUGE_VAL) - size);
-  }
-  nudged.set_initial_velocity(v);
-  for (std::int64_t c = 0; c < cycles; ++c) nudged.step();
   std::vector<std::int64_t> all_nodes(serial.node_count()), all_elements(serial.elements().size());
   for (std::size_t k = 0; k < all_nodes.size(); ++k) all_nodes[k] = static_cast<std::int64_t>(k);
   for (std::size_t k = 0; k < all_elements.size(); ++k) all_elements[k] = static_cast<std::int64_t>(k);
-  const Difference round_off = difference(nudged, serial, all_nodes, all_elements);
+  Difference round_off;
+  for (const int first : {1, -1}) {
+    Solver<D> nudged(model);
+    std::vector<double> v = velocity(nudged.position());
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const double size = std::max(std::abs(v[k]), v_ref);
+      v[k] += (k % 2 == 0 ? first : -first) * (std::nextafter(size, HUGE_VAL) - size);
+    }
+    nudged.set_initial_velocity(v);
+    for (std::int64_t c = 0; c < cycles; ++c) nudged.step();
+    const Difference d = difference(nudged, serial, all_nodes, all_elements);
+    round_off = {std::max(round_off.mass, d.mass),
+                 std::max(round_off.displacement, d.displacement),
+                 std::max(round_off.velocity, d.velocity),
+                 std::max(round_off.plastic_strain, d.plastic_strain),
+                 std::max(round_off.energy, d.energy),
+                 std::max(round_off.time, d.time),
+                 std::max(round_off.bar_stress, d.bar_stress),
+                 false};
+  }
 
   const RankPart part(comm, model);
   Solver<D> ranks(part);
@@ -187,7 +219,8 @@ void compare_with_serial(const Model& model, VelocityField velocity, double v_re
   const auto bound = [](double nudge) { return std::max(1e-12, 10.0 * nudge); };
   const bool within = d.mass < 1e-14 && d.displacement < bound(round_off.displacement) &&
                       d.plastic_strain < bound(round_off.plastic_strain) && d.energy < bound(round_off.energy) &&
-                      d.time < bound(round_off.time) && d.velocity < bound(round_off.velocity);
+                      d.time < bound(round_off.time) && d.velocity < bound(round_off.velocity) &&
+                      d.bar_stress < bound(round_off.bar_stress);
   if (comm.rank() == 0)
     test::record_check(fmt::format("FEM on {} MPI ranks, {}, {} cycles: fields against the serial run", comm.size(),
                                    problem, cycles),
@@ -202,7 +235,11 @@ void compare_with_serial(const Model& model, VelocityField velocity, double v_re
   EXPECT_LT(d.energy, bound(round_off.energy));
   EXPECT_LT(d.time, bound(round_off.time));
   EXPECT_LT(d.velocity, bound(round_off.velocity));
+  EXPECT_LT(d.bar_stress, bound(round_off.bar_stress));
   EXPECT_LT(ranks.energy().relative_error, energy_error);
+  // Every segment stepped by exactly one rank.
+  EXPECT_EQ(comm.sum(static_cast<std::int64_t>(ranks.bars().segment_count())),
+            static_cast<std::int64_t>(serial.bars().segment_count()));
 }
 
 // A soil column (1 x 1 x 10 m, 4 x 4 x 40 hexes, elastic), free, under gravity, its base loaded
@@ -257,6 +294,68 @@ Model lame_cylinder() {
 
 std::vector<double> at_rest(const std::vector<double>& x) { return std::vector<double>(x.size(), 0.0); }
 
+// A simply supported reinforced-concrete beam under a pressure pulse (the slab of
+// tests/solver/long_rc_slab.cpp, shortened to 400 cycles): half the span by symmetry at mid-span,
+// 0.5 m long and 0.1 m deep, the 35 MPa RHT concrete without rate enhancement, Steel 1006 bars
+// 20 mm inside each face, its top loaded by 5 MPa for 0.2 ms, the bottom held vertically over the
+// last 30 mm at the support. 3-D: 0.05 m of the width (symmetric at y = 0), 24 x 2 x 6 hexes, a
+// 12 mm bar (113 mm^2) top and bottom as embedded bars of 20 segments. Plane strain: 24 x 6 quads
+// with 5 cm^2/m each face, as embedded bars or as steel layers sharing nodes with the concrete.
+// The partition cuts the beam across its span, so that segments reach host nodes of other ranks.
+enum class Rebar { bars, layers };
+Model rc_beam(GeometryMode mode, Rebar rebar) {
+  const bool three_d = mode == GeometryMode::three_d;
+  const double half_span = 0.5, depth = 0.1, width = 0.05, cover = 0.02, p0 = 5e6, t_d = 2e-4;
+  Model model;
+  model.run.mode = mode;
+  model.mesh.dimension = three_d ? 3 : 2;
+  model.run.end_time = 1.0;
+  model.run.max_cycles = cycles;
+  model.materials.push_back({"concrete", test::rate_free_concrete(1.0), {}});
+  model.materials.push_back({"steel", test::steel_1006(), {}});
+  model.parts.push_back(Part{"beam", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"rebar", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
+  // The beam's depth along z in 3-D, along y in plane strain.
+  const int up = three_d ? 2 : 1;
+  if (rebar == Rebar::layers) {
+    RebarWallSpec wall;
+    wall.name = "beam";
+    wall.concrete_part = 0;
+    wall.size = {half_span, depth, 0.0};
+    wall.cells = {24, 6, 1};
+    wall.layers = {{cover, 5e-4, RebarFace::ymin, 1}, {cover, 5e-4, RebarFace::ymax, 1}};
+    add_rebar_wall(model.mesh, wall);
+  } else {
+    add_block(model.mesh, {"beam", 0, {0, 0, 0}, three_d ? std::array<double, 3>{half_span, width, depth}
+                                                         : std::array<double, 3>{half_span, depth, 0},
+                           three_d ? std::array<int, 3>{24, 2, 6} : std::array<int, 3>{24, 6, 1}});
+    for (const double level : {cover, depth - cover}) {
+      BarSet bar;
+      bar.name = level < 0.5 * depth ? "bottom" : "top";
+      bar.from = {0.0, 0.0, 0.0};
+      bar.from[static_cast<std::size_t>(up)] = level;
+      if (three_d) bar.from[1] = 0.02;  // m, off the mid-width element face
+      bar.to = bar.from;
+      bar.to[0] = half_span;
+      bar.segments = 20;
+      bar.area = three_d ? 1.13e-4 : 5e-4;
+      bar.material = 1;
+      model.bars.push_back(bar);
+    }
+  }
+  auto& held = model.mesh.node_sets["support"];
+  const std::size_t dim = three_d ? 3 : 2;
+  for (std::size_t n = 0; n < model.mesh.node_count(); ++n)
+    if (model.mesh.coordinates[dim * n] <= 0.03 + 1e-9 && model.mesh.coordinates[dim * n + static_cast<std::size_t>(up)] <= 1e-9)
+      held.push_back(static_cast<std::int64_t>(n));
+  model.boundaries.push_back(test::velocity("support", up, 0.0));
+  model.boundaries.push_back(test::symmetry("beam.xmax", {1, 0, 0}));
+  if (three_d) model.boundaries.push_back(test::symmetry("beam.ymin", {0, 1, 0}));
+  model.boundaries.push_back(test::pressure(three_d ? "beam.zmax" : "beam.ymax", p0,
+                                            TimeHistory{{0.0, t_d, t_d * 1.0001}, {1.0, 1.0, 0.0}}));
+  return model;
+}
+
 TEST(MpiFemRun, LameCylinderMatchesTheSerialRun) {
   compare_with_serial<2>(lame_cylinder(), at_rest, 1.0, "r-z Lame thick cylinder", false);
 }
@@ -280,6 +379,28 @@ TEST(MpiFemRun, HexImpactWithErosionMatchesTheSerialRun) {
   EXPECT_GT(probe.eroded_count(), 10u) << "the impact must erode elements for the test to cover erosion";
   if (world().rank() == 0) std::printf("serial run: %zu elements eroded\n", probe.eroded_count());
   compare_with_serial<3>(model, initial_velocity<3>, 100.0, "3-D steel block impact with erosion", true);
+}
+
+TEST(MpiFemRun, RcBeamWithEmbeddedBarsMatchesTheSerialRun3d) {
+  compare_with_serial<3>(rc_beam(GeometryMode::three_d, Rebar::bars), at_rest, 1.0,
+                         "3-D RC beam under a pressure pulse, embedded bars", false);
+}
+
+TEST(MpiFemRun, RcSlabWithEmbeddedBarsMatchesTheSerialRunPlaneStrain) {
+  compare_with_serial<2>(rc_beam(GeometryMode::plane_strain, Rebar::bars), at_rest, 1.0,
+                         "plane-strain RC slab under a pressure pulse, embedded bars", false);
+}
+
+TEST(MpiFemRun, RcSlabWithSteelLayersMatchesTheSerialRunPlaneStrain) {
+  compare_with_serial<2>(rc_beam(GeometryMode::plane_strain, Rebar::layers), at_rest, 1.0,
+                         "plane-strain RC slab under a pressure pulse, steel layers sharing nodes", false);
+}
+
+// The example case (cases/examples/rc_beam.toml: the presets' concrete with its rate enhancement
+// and P-alpha compaction), read as `camouflet run` reads it.
+TEST(MpiFemRun, RcBeamExampleMatchesTheSerialRun) {
+  compare_with_serial<3>(read_case(CAMOUFLET_SOURCE_DIR "/cases/examples/rc_beam.toml"), at_rest, 1.0,
+                         "the RC beam example (cases/examples/rc_beam.toml)", false);
 }
 
 TEST(MpiFemRun, AxisymmetricImpactMatchesTheSerialRun) {

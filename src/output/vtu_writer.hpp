@@ -1,7 +1,8 @@
 #pragma once
-// Field snapshots for ParaView: VTK XML UnstructuredGrid files (ASCII data)
-// and the .pvd collection that indexes them by time; on MPI ranks a piece per
-// rank and a .pvtu per snapshot that joins them (docs/parallel.md).
+// Field snapshots for ParaView: VTK XML UnstructuredGrid files (ASCII data, ten
+// significant digits) and the .pvd collection that indexes them by time; on MPI
+// ranks a piece per rank (appended raw binary data, exact) and a .pvtu per
+// snapshot that joins them (docs/parallel.md).
 //   mesh:      quads (VTK_QUAD) or hexes (VTK_HEXAHEDRON); point data velocity,
 //              displacement, acceleration; cell data density, pressure,
 //              stress (xx yy zz xy yz zx, ParaView's symmetric-tensor order),
@@ -20,7 +21,8 @@
 namespace camouflet {
 
 // With `node_id` and `element_id` (a piece of a run across MPI ranks: 1-based ids in the whole
-// mesh, one per node and element of the piece) they are written as point and cell data too.
+// mesh, one per node and element of the piece) they are written as point and cell data too, and
+// the data is appended raw binary (little-endian, UInt64 byte counts).
 void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& state,
                     std::span<const std::int64_t> node_id = {}, std::span<const std::int64_t> element_id = {});
 // The .pvtu that joins the pieces of one snapshot of a run across ranks (each a file written by

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -47,6 +48,7 @@ struct RunOutput::Impl {
   std::vector<double> snapshot_times;  // s, of each snapshot written (the .pvd is rebuilt from them)
   bool restarting = false;             // write nothing until the checkpoint is loaded
   int pieces = 0;                      // on MPI ranks: the pieces of each snapshot (.pvtu); 0: one .vtu
+  std::vector<std::int64_t> sampled_nodes, sampled_elements;  // what the gauges read
 
   explicit Impl(const Model& m) : model(m) {}
   std::string mesh_name(int index) const {
@@ -112,10 +114,25 @@ RunOutput::RunOutput(const Model& model, const RunOptions& options, const FieldS
     for (const auto& point : group.points) ser.gauge_names.push_back(point.name);
     ser.quantities = quantities;
     ser.values.assign(quantities.size(), std::vector<std::vector<double>>(group.points.size()));
+    for (const LocatedGauge& gauge : located) {
+      if (gauge.element >= 0) {
+        o.sampled_elements.push_back(gauge.element);
+        const auto npe = static_cast<std::size_t>(initial.nodes_per_element);
+        for (std::size_t a = 0; a < npe; ++a)
+          o.sampled_nodes.push_back(initial.connectivity[static_cast<std::size_t>(gauge.element) * npe + a]);
+      }
+      for (const auto& [node, share] : gauge.member_nodes) o.sampled_nodes.push_back(node);
+      for (const auto& [element, share] : gauge.member_elements) o.sampled_elements.push_back(element);
+    }
     o.located.push_back(std::move(located));
     o.series.push_back(std::move(ser));
     o.peaks.emplace_back();
     o.samples.push_back(0);
+  }
+
+  for (auto* ids : {&o.sampled_nodes, &o.sampled_elements}) {
+    std::sort(ids->begin(), ids->end());
+    ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
   }
 
   o.dir = options.output_dir;
@@ -162,6 +179,9 @@ void RunOutput::after_cycle(const FieldSnapshot& state) {
 }
 
 void RunOutput::write_fields_in_pieces(int ranks) { impl_->pieces = ranks; }
+
+const std::vector<std::int64_t>& RunOutput::sampled_nodes() const { return impl_->sampled_nodes; }
+const std::vector<std::int64_t>& RunOutput::sampled_elements() const { return impl_->sampled_elements; }
 
 int RunOutput::snapshot_due(double time) const {
   const Impl& o = *impl_;

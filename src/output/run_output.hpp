@@ -41,6 +41,10 @@ class RunOutput {
   // is a .pvtu joining fields_<k>/piece_<r>.vtu, which every rank writes before this one writes
   // the .pvtu (piece_path). The snapshot passed in then serves the gauges alone.
   void write_fields_in_pieces(int ranks);
+  // The nodes and elements (0-based, ascending) whose fields the gauges read: all a run across
+  // ranks must gather for them once they are located (parallel/whole_snapshot.hpp).
+  const std::vector<std::int64_t>& sampled_nodes() const;
+  const std::vector<std::int64_t>& sampled_elements() const;
   // The index the next snapshot takes when after_cycle at `time` (or finish at `cycle`, or the
   // initial snapshot) writes one, else -1: what the ranks must write their pieces for.
   int snapshot_due(double time) const;

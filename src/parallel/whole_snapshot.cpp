@@ -1,5 +1,7 @@
 #include "parallel/whole_snapshot.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace camouflet {
@@ -11,22 +13,21 @@ namespace {
 // strain, damage, temperature, material), all as doubles (ids and materials are exact in them).
 constexpr int element_record = 13;
 
-std::vector<double> pack(const RankPart& part, const FieldSnapshot& s) {
+// `nodes`: the local nodes to send (owned ones), `elements`: the local elements.
+std::vector<double> pack(const RankPart& part, const FieldSnapshot& s, std::span<const std::size_t> nodes,
+                         std::span<const std::size_t> elements) {
   const LocalMesh& local = part.local();
   const auto d = static_cast<std::size_t>(s.dimension);
   std::vector<double> out;
-  std::size_t owned = 0;
-  for (char o : local.owned) owned += o ? 1 : 0;
-  out.reserve(2 + owned * (1 + 4 * d) + local.global_element.size() * element_record);
-  out.push_back(static_cast<double>(owned));
-  for (std::size_t n = 0; n < local.owned.size(); ++n) {
-    if (!local.owned[n]) continue;
+  out.reserve(2 + nodes.size() * (1 + 4 * d) + elements.size() * element_record);
+  out.push_back(static_cast<double>(nodes.size()));
+  for (const std::size_t n : nodes) {
     out.push_back(static_cast<double>(local.global_node[n]));
     for (const auto* field : {&s.node_position, &s.node_displacement, &s.node_velocity, &s.node_acceleration})
       for (std::size_t i = 0; i < d; ++i) out.push_back((*field)[n * d + i]);
   }
-  out.push_back(static_cast<double>(local.global_element.size()));
-  for (std::size_t e = 0; e < local.global_element.size(); ++e) {
+  out.push_back(static_cast<double>(elements.size()));
+  for (const std::size_t e : elements) {
     const SymTensor& t = s.element_stress[e];
     for (double v : {static_cast<double>(local.global_element[e]), s.element_density[e], s.element_pressure[e], t.xx,
                      t.yy, t.zz, t.xy, t.yz, t.zx, s.element_plastic_strain[e], s.element_damage[e],
@@ -39,10 +40,35 @@ std::vector<double> pack(const RankPart& part, const FieldSnapshot& s) {
 
 }  // namespace
 
+void WholeSnapshot::restrict_to(const RankPart& part, std::span<const std::int64_t> nodes,
+                                std::span<const std::int64_t> elements) {
+  const LocalMesh& local = part.local();
+  const auto wanted = [](std::span<const std::int64_t> list, std::int64_t id) {
+    return std::binary_search(list.begin(), list.end(), id);
+  };
+  if (!std::is_sorted(nodes.begin(), nodes.end()) || !std::is_sorted(elements.begin(), elements.end()))
+    throw std::logic_error("WholeSnapshot::restrict_to: ids must be ascending");
+  nodes_.clear();
+  elements_.clear();
+  for (std::size_t n = 0; n < local.global_node.size(); ++n)
+    if (local.owned[n] && wanted(nodes, local.global_node[n])) nodes_.push_back(n);
+  for (std::size_t e = 0; e < local.global_element.size(); ++e)
+    if (wanted(elements, local.global_element[e])) elements_.push_back(e);
+  restricted_ = true;
+  blanked_ = false;
+}
+
 const FieldSnapshot& WholeSnapshot::gather(const RankPart& part, const FieldSnapshot& mine) {
   if (mine.particle_count() > 0) throw std::logic_error("WholeSnapshot: particles do not cross ranks yet");
   const Communicator& comm = part.comm();
-  const std::vector<double> record = pack(part, mine);
+  if (!restricted_) {  // everything this rank steps: its owned nodes, its elements
+    nodes_.clear();
+    elements_.clear();
+    for (std::size_t n = 0; n < part.local().owned.size(); ++n)
+      if (part.local().owned[n]) nodes_.push_back(n);
+    for (std::size_t e = 0; e < part.local().global_element.size(); ++e) elements_.push_back(e);
+  }
+  const std::vector<double> record = pack(part, mine, nodes_, elements_);
   const std::int64_t size = static_cast<std::int64_t>(record.size());
   const std::vector<std::int64_t> sizes = comm.all_gather(std::span<const std::int64_t>(&size, 1));
   std::vector<int> ranks;
@@ -65,10 +91,15 @@ const FieldSnapshot& WholeSnapshot::gather(const RankPart& part, const FieldSnap
   const FemMesh& mesh = whole_->mesh;
   const auto d = static_cast<std::size_t>(mesh.dimension);
   const std::size_t nn = mesh.node_count(), ne = mesh.element_count();
-  for (auto* field : {&position_, &displacement_, &velocity_, &acceleration_}) field->assign(nn * d, 0.0);
-  for (auto* field : {&density_, &pressure_, &plastic_strain_, &damage_, &temperature_}) field->assign(ne, 0.0);
-  stress_.assign(ne, SymTensor{});
-  material_.assign(ne, 0);
+  // Whole: every entry is sent. Restricted: the rest blanked once, the same entries sent each time.
+  if (!restricted_ || !blanked_) {
+    const double fill = restricted_ ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+    for (auto* field : {&position_, &displacement_, &velocity_, &acceleration_}) field->assign(nn * d, fill);
+    for (auto* field : {&density_, &pressure_, &plastic_strain_, &damage_, &temperature_}) field->assign(ne, fill);
+    stress_.assign(ne, SymTensor{fill, fill, fill, fill, fill, fill});
+    material_.assign(ne, restricted_ ? -1 : 0);
+    blanked_ = restricted_;
+  }
   const auto unpack = [&](const std::vector<double>& in) {
     std::size_t at = 0;
     const auto nodes = static_cast<std::size_t>(in[at++]);

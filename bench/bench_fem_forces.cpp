@@ -60,10 +60,11 @@ void element_forces(benchmark::State& state) {
 
 }  // namespace
 
-// Arguments: cells per direction, threads, assembly (bench::Assembly: 0 buffers, 1 colours, 2 colour_blocks).
+// Arguments: cells per direction, threads, assembly (bench::Assembly: 0 buffers, 1 colours, 2 colour_blocks,
+// 3 element_order).
 void arguments(benchmark::internal::Benchmark* b, int cells) {
   for (int threads : {1, 2})
-    for (int assembly : {0, 1, 2}) b->Args({cells, threads, assembly});
+    for (int assembly : {0, 1, 2, 3}) b->Args({cells, threads, assembly});
 }
 BENCHMARK(element_forces<3>)
     ->Apply([](benchmark::internal::Benchmark* b) { arguments(b, 32); })

@@ -63,6 +63,12 @@ double ElementForceKernel<D>::consecutive(std::size_t first, int count, double* 
 }
 
 template <int D>
+double ElementForceKernel<D>::consecutive_into_slots(std::size_t first, int count, double* f_slots,
+                                                     double* fh_slots) const {
+  return pack<ConsecutiveLanes, true>(ConsecutiveLanes{first, count}, f_slots, fh_slots);
+}
+
+template <int D>
 double ElementForceKernel<D>::listed(const std::uint32_t* element, int count, double* f_out,
                                      double* fh_out) const {
   return pack(ListedLanes{element, count}, f_out, fh_out);
@@ -72,7 +78,7 @@ double ElementForceKernel<D>::listed(const std::uint32_t* element, int count, do
 // computed lane-parallel, scattered into f_out (and the hourglass part into
 // fh_out) lane by lane; returns the stiffness-form hourglass energy held.
 template <int D>
-template <class Lanes>
+template <class Lanes, bool into_slots>
 double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh_out) const {
   constexpr int N = FemElements<D>::nodes;
   constexpr int W = pack_width;
@@ -270,6 +276,16 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
   const bool scatter_hourglass = fh_out && viscous_hg;
   for (int l = 0; l < count; ++l) {
     const std::size_t e = lanes.at(l);
+    if constexpr (into_slots) {  // every slot written, eroded elements' with noughts
+      const bool gone = eroded[e] != 0, lane_hourglass = scatter_hourglass && !stiff[l] && !gone;
+      for (int a = 0; a < N; ++a) {
+        const std::size_t k = (e * N + static_cast<std::size_t>(a)) * D;
+        for (int i = 0; i < D; ++i) f_out[k + static_cast<std::size_t>(i)] = gone ? 0.0 : fe[i][a][l];
+        if (fh_out)
+          for (int i = 0; i < D; ++i) fh_out[k + static_cast<std::size_t>(i)] = lane_hourglass ? fh[i][a][l] : 0.0;
+      }
+      continue;
+    }
     if (eroded[e]) continue;
     const std::int64_t* c = connectivity.data() + e * N;
     const bool scatter_lane = scatter_hourglass && !stiff[l];

@@ -36,12 +36,18 @@ class ElementForceKernel {
   double consecutive(std::size_t first, int count, double* f_out, double* fh_out) const;
   // The same for the elements element[0 .. count - 1] (0-based numbers).
   double listed(const std::uint32_t* element, int count, double* f_out, double* fh_out) const;
+  // As consecutive, each element's node forces unsummed: element e's node a (its a-th in the
+  // connectivity) at slot e * nodes + a of f_slots (elements*nodes*D, values D per slot; fh_slots
+  // alike, may be null), overwritten. For an assembly that adds them up node by node in an order
+  // of its choosing (bench/fem_assemblies.hpp: in ascending element number, the same on any
+  // number of threads or ranks).
+  double consecutive_into_slots(std::size_t first, int count, double* f_slots, double* fh_slots) const;
 
   // Whether any element holds stiffness-form energy (an assembly then sums it pack by pack).
   bool holds_stiffness_energy() const { return any_stiff_hg_; }
 
  private:
-  template <class Lanes>
+  template <class Lanes, bool into_slots = false>
   double pack(const Lanes& lanes, double* f_out, double* fh_out) const;
 
   FemElements<D>& elements_;

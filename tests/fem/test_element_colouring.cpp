@@ -142,8 +142,11 @@ void check_assemblies(const std::string& name, HourglassForm form) {
   const auto buffers_1 = problem.forces(bench::Assembly::buffers, form, 1);
   const auto buffers_2 = problem.forces(bench::Assembly::buffers, form, 2);
   EXPECT_GT(*std::max_element(buffers_1.begin(), buffers_1.end()), 1.0);  // not trivially zero
-  for (const bench::Assembly assembly : {bench::Assembly::colours, bench::Assembly::colour_blocks}) {
-    const std::string kind = assembly == bench::Assembly::colours ? "colour" : "colour-block";
+  for (const bench::Assembly assembly :
+       {bench::Assembly::colours, bench::Assembly::colour_blocks, bench::Assembly::element_order}) {
+    const std::string kind = assembly == bench::Assembly::colours         ? "colour"
+                             : assembly == bench::Assembly::colour_blocks ? "colour-block"
+                                                                          : "element-order";
     const auto colours_1 = problem.forces(assembly, form, 1);
     const auto colours_2 = problem.forces(assembly, form, 2);
     test::verify({name + ": nodal forces, " + kind + " assembly against per-thread buffers (1 thread)",
@@ -152,7 +155,7 @@ void check_assemblies(const std::string& name, HourglassForm form) {
     test::verify({name + ": nodal forces, " + kind + " assembly against per-thread buffers (2 threads)",
                   "the same element forces summed in another order (round-off)", 0.0,
                   relative_difference(buffers_2, colours_2), 1e-12, false, "relative"});
-    // Each node adds its elements in colour order on any thread count: the same bits.
+    // Each node adds its elements in colour (element) order on any thread count: the same bits.
     test::verify({name + ": nodal forces, " + kind + " assembly on 1 and 2 threads", "bit-identical", 0.0,
                   relative_difference(colours_1, colours_2), 0.0, false, "relative"});
     EXPECT_TRUE(colours_1 == colours_2);

@@ -74,13 +74,14 @@ BarHosts locate_bar_nodes(const Model& model, const std::vector<double>& x0) {
 
     for (int b = 0; b <= spec.segments; ++b) {
       double x[3];
-      for (std::size_t i = 0; i < 3; ++i) x[i] = spec.from[i] + (spec.to[i] - spec.from[i]) * b / spec.segments;
+      for (std::size_t i = 0; i < 3; ++i)
+        x[i] = spec.from[i] + (spec.to[i] - spec.from[i]) * b / spec.segments;
       const auto host = find_host(mesh, spec.host_part, x);
       if (!host)
         throw InputError(
             spec.where,
-            fmt::format("bar '{}': node {} at ({:.6g}, {:.6g}{}) lies outside {}", spec.name, b + 1, x[0], x[1],
-                        dim == 3 ? fmt::format(", {:.6g}", x[2]) : std::string(),
+            fmt::format("bar '{}': node {} at ({:.6g}, {:.6g}{}) lies outside {}", spec.name, b + 1, x[0],
+                        x[1], dim == 3 ? fmt::format(", {:.6g}", x[2]) : std::string(),
                         spec.host_part >= 0
                             ? "host part '" + model.parts[static_cast<std::size_t>(spec.host_part)].name + "'"
                             : std::string("the mesh")));
@@ -90,9 +91,9 @@ BarHosts locate_bar_nodes(const Model& model, const std::vector<double>& x0) {
       // The bar node's position at t = 0 as the bars interpolate it, summed in the same order.
       double at[3] = {0.0, 0.0, 0.0};
       for (int a = 0; a < hosts.host_nodes; ++a) {
-        const std::int64_t node =
-            mesh.connectivity[static_cast<std::size_t>(host->element) * static_cast<std::size_t>(hosts.host_nodes) +
-                              static_cast<std::size_t>(a)];
+        const std::int64_t node = mesh.connectivity[static_cast<std::size_t>(host->element) *
+                                                        static_cast<std::size_t>(hosts.host_nodes) +
+                                                    static_cast<std::size_t>(a)];
         hosts.node.push_back(node);
         hosts.weight.push_back(n[a]);
         for (int i = 0; i < dim; ++i) at[i] += n[a] * x0[static_cast<std::size_t>(node * dim + i)];

@@ -24,17 +24,29 @@ struct Buffer {
   std::string xml;
   bool appended;
   std::string data;  // appended: per array its byte count (UInt64) then its values, little-endian
-  Buffer& operator+=(const char* text) { xml += text; return *this; }
-  Buffer& operator+=(char c) { xml += c; return *this; }
+  Buffer& operator+=(const char* text) {
+    xml += text;
+    return *this;
+  }
+  Buffer& operator+=(char c) {
+    xml += c;
+    return *this;
+  }
 };
 
-static_assert(std::endian::native == std::endian::little, "appended VTU data is written as the host stores it");
+static_assert(std::endian::native == std::endian::little,
+              "appended VTU data is written as the host stores it");
 
-template <class T> constexpr const char* vtk_type();
-template <> constexpr const char* vtk_type<double>() { return "Float64"; }
-template <> constexpr const char* vtk_type<std::int64_t>() { return "Int64"; }
-template <> constexpr const char* vtk_type<std::int32_t>() { return "Int32"; }
-template <> constexpr const char* vtk_type<std::uint8_t>() { return "UInt8"; }
+// VTK's name of the type each array is written in.
+template <class T>
+constexpr const char* vtk_type() {
+  if constexpr (std::is_same_v<T, double>) return "Float64";
+  if constexpr (std::is_same_v<T, std::int64_t>) return "Int64";
+  if constexpr (std::is_same_v<T, std::int32_t>) return "Int32";
+  static_assert(std::is_same_v<T, double> || std::is_same_v<T, std::int64_t> ||
+                std::is_same_v<T, std::int32_t> || std::is_same_v<T, std::uint8_t>);
+  return "UInt8";
+}
 
 // One data array of `components` values per tuple. ASCII: ten significant digits, a line break
 // after every `per_line` values (none when 0). Appended: the raw bytes, located by their offset.
@@ -70,7 +82,8 @@ void vector_array(Buffer& b, const char* name, std::span<const double> field, st
   if (!field.empty())
     for (std::size_t i = 0; i < n; ++i)
       for (int k = 0; k < dim; ++k)
-        v[3 * i + static_cast<std::size_t>(k)] = field[i * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
+        v[3 * i + static_cast<std::size_t>(k)] =
+            field[i * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
   put_array<double>(b, name, 3, v, 12);
 }
 
@@ -105,8 +118,8 @@ void header(Buffer& b, std::size_t points, std::size_t cells, double time) {
       "</DataArray>\n",
       time);
   b += "    </FieldData>\n";
-  fmt::format_to(std::back_inserter(b.xml), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points,
-                 cells);
+  fmt::format_to(std::back_inserter(b.xml), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+                 points, cells);
 }
 
 void footer(Buffer& b) {
@@ -123,7 +136,8 @@ void cells(Buffer& b, std::span<const std::int64_t> connectivity, std::size_t n_
   b += "      <Cells>\n";
   put_array<std::int64_t>(b, "connectivity", 1, connectivity, static_cast<std::size_t>(npe));
   std::vector<std::int64_t> offsets(n_cells);
-  for (std::size_t c = 0; c < n_cells; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * static_cast<std::size_t>(npe));
+  for (std::size_t c = 0; c < n_cells; ++c)
+    offsets[c] = static_cast<std::int64_t>((c + 1) * static_cast<std::size_t>(npe));
   put_array<std::int64_t>(b, "offsets", 1, offsets, 0);
   const std::vector<std::uint8_t> types(n_cells, static_cast<std::uint8_t>(type));
   put_array<std::uint8_t>(b, "types", 1, types, 0);
@@ -138,8 +152,8 @@ void points(Buffer& b, std::span<const double> position, std::size_t n, int dim)
 
 }  // namespace
 
-void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& s, std::span<const std::int64_t> node_id,
-                    std::span<const std::int64_t> element_id) {
+void write_mesh_vtu(const std::filesystem::path& path, const FieldSnapshot& s,
+                    std::span<const std::int64_t> node_id, std::span<const std::int64_t> element_id) {
   const int dim = s.dimension;
   const std::size_t n = s.node_count(), m = s.element_count();
   // A piece of a run across ranks (with ids) in appended raw binary: exact values, 8 bytes each
@@ -178,8 +192,9 @@ void write_mesh_pvtu(const std::filesystem::path& path, const std::vector<std::s
        "header_type=\"UInt64\">\n";
   b += "  <PUnstructuredGrid GhostLevel=\"0\">\n";
   const auto array = [&b](const char* type, const char* name, int components) {
-    fmt::format_to(std::back_inserter(b), "        <PDataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"/>\n",
-                   type, name, components);
+    fmt::format_to(std::back_inserter(b),
+                   "        <PDataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"/>\n", type, name,
+                   components);
   };
   b += "      <PPointData Vectors=\"velocity\">\n";
   for (const char* name : {"velocity", "displacement", "acceleration"}) array("Float64", name, 3);
@@ -196,7 +211,8 @@ void write_mesh_pvtu(const std::filesystem::path& path, const std::vector<std::s
   b += "      <PPoints>\n";
   array("Float64", "position", 3);
   b += "      </PPoints>\n";
-  for (const std::string& piece : pieces) fmt::format_to(std::back_inserter(b), "    <Piece Source=\"{}\"/>\n", piece);
+  for (const std::string& piece : pieces)
+    fmt::format_to(std::back_inserter(b), "    <Piece Source=\"{}\"/>\n", piece);
   b += "  </PUnstructuredGrid>\n</VTKFile>\n";
   write_file_atomically(path, b);
 }

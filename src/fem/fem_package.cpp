@@ -36,8 +36,8 @@ void FemPackage<D>::add_element_forces(double dt_previous) {
       elements.add_internal_forces(position.data(), velocity.data(), force.data(), f_hourglass, hourglass, dt_previous);
   // The viscous hourglass forces stay each rank's own share: their work (drift_nodes) is the sum
   // of the shares' over the ranks, as the serial sum is over the elements.
-  // The bars' before the sum: on ranks a segment is stepped by one rank, its host nodes held by
-  // others too.
+  // The bars' forces join the sum: on ranks a segment is stepped by one rank, and other ranks
+  // hold some of its host nodes too.
   if (!bars.empty()) bars.add_forces(position.data(), force.data());
   if (sharing_) sharing_->sum_shared(force, D);
 }

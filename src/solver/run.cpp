@@ -74,8 +74,9 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
   }
   RunOutput* output = output_owner ? &*output_owner : nullptr;
   if (ranks) {
-    // The gauges are located: from here on the snapshot gathers only what they read (rank 0's
-    // lists, passed to every rank), however large the mesh.
+    // The gauges are located: from here on the snapshot gathers only what they read, however
+    // large the mesh. Rank 0's lists (its output's), passed to every rank: the node count, the
+    // nodes, the elements.
     std::vector<std::int64_t> ids;
     if (output) {
       ids.push_back(static_cast<std::int64_t>(output->sampled_nodes().size()));
@@ -87,10 +88,9 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     comm.broadcast(bytes, 0);
     ids.resize(bytes.size() / sizeof(std::int64_t));
     std::memcpy(ids.data(), bytes.data(), bytes.size());
-    const auto nodes = ids.empty() ? std::size_t{0} : static_cast<std::size_t>(ids[0]);
     const std::span<const std::int64_t> all(ids);
-    ranks->whole_snapshot.restrict_to(ranks->part, all.empty() ? all : all.subspan(1, nodes),
-                                      all.empty() ? all : all.subspan(1 + nodes));
+    const auto nodes = static_cast<std::size_t>(all[0]);
+    ranks->whole_snapshot.restrict_to(ranks->part, all.subspan(1, nodes), all.subspan(1 + nodes));
   }
   // On ranks: every rank writes its piece of snapshot `index` (rank 0's decision, passed on here
   // or in the cycle's exchange; -1: none), then all wait, so that the .pvtu rank 0 writes next

@@ -283,24 +283,6 @@ double EmbeddedBars<D>::internal_energy() const {
 }
 
 template <int D>
-double EmbeddedBars<D>::kinetic_energy(const double* v) const {
-  double k = 0.0;
-  for (std::size_t b = 0; b < node_mass_.size(); ++b) {
-    double vb[D];
-    bar_node_velocity(v, b, vb);
-    for (int c = 0; c < D; ++c) k += 0.5 * node_mass_[b] * vb[c] * vb[c];
-  }
-  return k;
-}
-
-template <int D>
-double EmbeddedBars<D>::mass() const {
-  double m = 0.0;
-  for (double s : segment_mass_) m += s;
-  return m;
-}
-
-template <int D>
 double EmbeddedBars<D>::stable_time_step(const double* x, std::size_t& segment) const {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t s = 0; s < segment_set_.size(); ++s) {

@@ -58,9 +58,7 @@ class EmbeddedBars {
   // uniaxial-stress material update of every segment.
   void update(const double* x, const double* v, double dt, double time);
 
-  double internal_energy() const;                // J, sum m e over the bars
-  double kinetic_energy(const double* v) const;  // J, of the bar masses at the interpolated velocities
-  double mass() const;                           // kg (plane strain: per metre of depth)
+  double internal_energy() const;  // J, sum m e over the segments stepped here
   // Smallest segment length / longitudinal wave speed (s) and its segment (0-based).
   double stable_time_step(const double* x, std::size_t& segment) const;
   // Every array a restart needs (checkpoints): the bars' material

@@ -291,12 +291,22 @@ void read_parts(TomlReader& root, Model& model, const std::filesystem::path& cas
         part.viscosity_form = read_viscosity_form(*v, model.run.viscosity_form);
         v->finish();
       }
+      if (p.has("axisymmetric_momentum")) {
+        if (model.run.mode != GeometryMode::axisymmetric)
+          p.fail("axisymmetric_momentum", "a momentum form is chosen in geometry mode 'axisymmetric' only");
+        part.area_weighted_momentum =
+            p.choice("axisymmetric_momentum", {"volume", "area"}, "volume") == "area";
+      }
     } else {
       if (p.has("hourglass"))
         p.fail("hourglass", "only a FEM part has hourglass control (SPH particles have no hourglass modes)");
       if (p.has("viscosity"))
-        p.fail("viscosity", "only a FEM part takes a FEM viscosity form (the particles' is [sph] viscosity_alpha, "
-                            "viscosity_beta)");
+        p.fail("viscosity",
+               "only a FEM part takes a FEM viscosity form (the particles' is [sph] viscosity_alpha, "
+               "viscosity_beta)");
+      if (p.has("axisymmetric_momentum"))
+        p.fail("axisymmetric_momentum",
+               "only a FEM part takes a momentum form (the particles' r-z sums are set in [sph])");
     }
     const int index = static_cast<int>(model.parts.size());
     model.parts.push_back(part);

@@ -142,21 +142,36 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
       sig[0][2][l] = sig[2][0][l] = s.zx;
     }
   }
-  if (!area) {
+  // The lanes in the r-z area form: all, none, or (parts of both forms meet in this pack) some.
+  bool all_area = area, no_area = !area;
+  bool area_lane[W];
+  for (int l = 0; l < W; ++l) area_lane[l] = area;
+  if (area && !el.area_form_.empty()) {
+    all_area = true, no_area = true;
+    for (int l = 0; l < W; ++l) {
+      area_lane[l] = el.area_form_[lanes.at(l)] != 0;
+      all_area = all_area && area_lane[l];
+      no_area = no_area && !area_lane[l];
+    }
+  }
+  if (!all_area) {
     for (int a = 0; a < N; ++a)
       for (int i = 0; i < D; ++i) {
         Pack t{};
         for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
         fe[i][a] = -vol * t;
       }
+    if constexpr (D == 2) {
+      if (axi) {
+        // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
+        // v_r at the centre = mean of the nodal v_r.
+        const Pack hoop_force = vol * hoop / (N * r_bar);
+        for (int a = 0; a < N; ++a) fe[0][a] -= hoop_force;
+      }
+    }
   }
   if constexpr (D == 2) {
-    if (axi && !area) {
-      // Hoop stress: virtual power of sigma_tt against the hoop rate v_r / r_bar,
-      // v_r at the centre = mean of the nodal v_r.
-      const Pack hoop_force = vol * hoop / (N * r_bar);
-      for (int a = 0; a < N; ++a) fe[0][a] -= hoop_force;
-    } else if (area) {
+    if (!no_area) {
       // Area-weighted momentum (Wilkins 1964): the planar divergence of
       // sigma over the area, the sources (sigma_rr - sigma_tt) / r and
       // sigma_rz / r shared equally, and each node's sum scaled by its ring
@@ -172,7 +187,13 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
         for (int i = 0; i < D; ++i) {
           Pack t{};
           for (int j = 0; j < D; ++j) t += sig[i][j] * b[j][a];
-          fe[i][a] = ring * (-measure * t + (i == 0 ? source_r : source_z));
+          const Pack f = ring * (-measure * t + (i == 0 ? source_r : source_z));
+          if (all_area) {
+            fe[i][a] = f;
+          } else {
+            for (int l = 0; l < W; ++l)
+              if (area_lane[l]) fe[i][a][l] = f[l];
+          }
         }
       }
     }
@@ -236,9 +257,9 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
   // form planar, times each node's ring factor.
   if (!el.edge_force.empty() || !el.subzone_pressure.empty()) {
     using E = ElementEdges<D>;
-    const bool ring_volumes = axi && !area;
     for (int l = 0; l < count; ++l) {
       const std::size_t e = lanes.at(l);
+      const bool ring_volumes = axi && !area_lane[l];
       double fl[D][N] = {};
       if (!el.edge_force.empty()) {
         const double* force = &el.edge_force[e * static_cast<std::size_t>(E::count * D)];
@@ -262,7 +283,9 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
       }
       for (int a = 0; a < N; ++a) {
         const double ring =
-            area ? ring_factor_[static_cast<std::size_t>(connectivity[e * N + static_cast<std::size_t>(a)])] : 1.0;
+            area_lane[l]
+                ? ring_factor_[static_cast<std::size_t>(connectivity[e * N + static_cast<std::size_t>(a)])]
+                : 1.0;
         for (int i = 0; i < D; ++i) fe[i][a][l] += ring * fl[i][a];
       }
     }

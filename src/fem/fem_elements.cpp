@@ -83,7 +83,7 @@ void FemElements<D>::set_subzonal_pressure(const std::vector<double>& kappa, con
     NodeValues<D> xe;
     gather<D>(x, &connectivity[e * nodes], xe);
     double v[nodes];
-    subzone_volumes<D>(xe, axisymmetric_ && !area_weighted_, v);  // the r-z area form: areas
+    subzone_volumes<D>(xe, axisymmetric_ && !area_form(e), v);  // the r-z area form: areas
     double total = 0.0;
     for (int s = 0; s < nodes; ++s) total += v[s];
     for (int s = 0; s < nodes; ++s) {
@@ -127,6 +127,17 @@ void FemElements<D>::colour_if_needed() {
   const std::size_t block = colour_block_size(size());
   if (colouring_.block != block || colouring_.begin.back() * block < size())
     colouring_ = colour_elements(connectivity, nodes, node_count_, block);
+}
+
+template <int D>
+void FemElements<D>::set_area_forms(std::vector<char> per_element) {
+  const bool any = std::any_of(per_element.begin(), per_element.end(), [](char a) { return a != 0; });
+  const bool all = std::all_of(per_element.begin(), per_element.end(), [](char a) { return a != 0; });
+  area_weighted_ = any;
+  if (all || !any)
+    area_form_.clear();
+  else
+    area_form_ = std::move(per_element);
 }
 
 template <int D>

@@ -117,7 +117,14 @@ class FemElements {
   // from a centre; conserves energy only to the mesh's truncation error
   // (docs/theory-fem.md, "Axisymmetric momentum").
   void set_area_weighted_momentum(bool on) { area_weighted_ = on; }
+  // Per element (a part's own `axisymmetric_momentum`): nonzero for the area form. Nodes shared
+  // by elements of both forms take each element's force in its own form (the area form's times
+  // the node's ring factor, so both are forces on the ring). Forms all alike: as
+  // set_area_weighted_momentum.
+  void set_area_forms(std::vector<char> per_element);
+  // Whether any element is in the area form.
   bool area_weighted_momentum() const { return area_weighted_; }
+  bool area_form(std::size_t e) const { return area_form_.empty() ? area_weighted_ : area_form_[e] != 0; }
   // The ring factors m_a / M_a from positions x, before this step's forces
   // (boundary loads use them too); empty unless area-weighted.
   void update_ring_factors(const double* x);
@@ -177,6 +184,7 @@ class FemElements {
   ElementColouring colouring_;
   std::vector<double> pack_stored_;
   bool area_weighted_ = false;
+  std::vector<char> area_form_;      // per element where the forms differ (set_area_forms)
   std::vector<double> ring_factor_;  // r-z area-weighted momentum: m_a / M_a per node
   std::vector<double> area_mass_;    // scratch of update_ring_factors: sum_e m_e / (N 2 pi r_bar_e) per node
 };

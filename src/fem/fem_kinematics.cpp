@@ -12,9 +12,9 @@
 #include "core/error.hpp"
 #include "fem/edge_viscosity.hpp"
 #include "fem/element_gather.hpp"
-#include "fem/subzonal_pressure.hpp"
 #include "fem/fem_elements.hpp"
 #include "fem/parallel.hpp"
+#include "fem/subzonal_pressure.hpp"
 
 namespace camouflet {
 
@@ -63,7 +63,6 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
   const bool subzones = !subzone_pressure.empty();
   // r-z area form: planar subzone areas and median lengths, the nodes' ring factors apply them
   // (element_forces.cpp).
-  const bool ring_volumes = axi && !area_weighted_;
   constexpr std::size_t edge_values = static_cast<std::size_t>(ElementEdges<D>::count * D);
 #pragma omp parallel for schedule(static) reduction(min : bad, tangled) reduction(+ : viscous_work) if (static_cast<std::int64_t>(ne) > parallel_threshold)
   for (std::int64_t k = 0; k < packs; ++k) {
@@ -219,6 +218,8 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       pts_viscosity[p] = q_mean[l];
       pts_length[p] = le[l];
       // This lane's nodes at t_(n+1), for the subzonal pressures and the edge viscosity.
+      const bool area_l = axi && area_form(e);  // the r-z area form (a part's own or the run's)
+      const bool ring_volumes = axi && !area_l;
       const bool subzones_l = subzones && subzonal_coefficient[e] > 0.0;
       const bool edges_l = edges && form[l] == ViscosityForm::edge;
       double xl[D][N];
@@ -242,7 +243,7 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
           subzone_pressure[k] = dp;
           subzone_volume[k] = v_new[a];
         }
-        pts_energy[p] += work * (area_weighted_ ? w[l] : 1.0) / mass[e];
+        pts_energy[p] += work * (area_l ? w[l] : 1.0) / mass[e];
       }
       if (edges_l) {
         // The edge forces at t_(n+1) from x(n+1), v(n+1/2); the work of the old and the new
@@ -258,8 +259,9 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         double vw[D][N];
         for (int a = 0; a < N; ++a) {
           const double ring =
-              area_weighted_ ? ring_factor_[static_cast<std::size_t>(connectivity[e * N + static_cast<std::size_t>(a)])]
-                             : 1.0;
+              area_l
+                  ? ring_factor_[static_cast<std::size_t>(connectivity[e * N + static_cast<std::size_t>(a)])]
+                  : 1.0;
           for (int i = 0; i < D; ++i) vw[i][a] = ring * vl[i][a];
         }
         // The limiter from the velocity differences along each edge's continuations (global

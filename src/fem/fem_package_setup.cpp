@@ -46,7 +46,15 @@ FemPackage<D>::FemPackage(const Model& model, const NodeSharing* sharing) : mode
 
   try {
     elements = FemElements<D>(mesh, mode, position);
-    elements.set_area_weighted_momentum(mode == GeometryMode::axisymmetric && model.run.area_weighted_momentum);
+    elements.set_area_weighted_momentum(mode == GeometryMode::axisymmetric &&
+                                        model.run.area_weighted_momentum);
+    if (mode == GeometryMode::axisymmetric) {
+      // Each element its part's form (Model::area_weighted_momentum_of), stored only where they differ.
+      std::vector<char> area(elements.size());
+      for (std::size_t e = 0; e < area.size(); ++e)
+        area[e] = model.area_weighted_momentum_of(static_cast<std::size_t>(mesh.element_part[e])) ? 1 : 0;
+      elements.set_area_forms(std::move(area));
+    }
   } catch (const InputError& e) {  // name the case file the mesh came from
     throw InputError(SourceLocation{model.case_file, 0, 0, "mesh"}, e.message());
   }

@@ -162,8 +162,11 @@ std::string part_geostatic(const BuriedStructureSpec& s, const std::string& mate
 std::string part_hourglass(const BuriedStructureSpec& s, const std::string& material, bool axis_treatment) {
   if (material != "concrete") return "";
   if (axis_treatment)
+    // The box keeps the volume form: under a standing load (gravity) a structure in the area form
+    // does not come to rest (docs/theory-fem.md, "Axisymmetric momentum").
     return fmt::format("hourglass = {{ form = \"{}\", coefficient = {}, subzonal = 0.0 }}  # structure.hourglass\n"
-                       "viscosity = {{ form = \"acceleration\" }}  # the box: the point q, no subzonal pressures\n",
+                       "viscosity = {{ form = \"acceleration\" }}  # the box: the point q, no subzonal pressures\n"
+                       "axisymmetric_momentum = \"volume\"  # the box: the volume form (the soil's: the area form)\n",
                        s.structure_hourglass, s.structure_hourglass_kappa());
   if (s.structure_hourglass == s.soil_hourglass && s.structure_hourglass_kappa() == s.soil_hourglass_kappa())
     return "";

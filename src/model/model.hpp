@@ -154,6 +154,11 @@ struct Part {
   // (docs/buried-structure.md, "The axis without soil erosion").
   std::optional<double> subzonal;
   std::optional<ViscosityForm> viscosity_form;
+  // The part's own r-z momentum form (`axisymmetric_momentum`: true for "area"); none: the run's.
+  // A buried structure's concrete keeps the volume form where its soil takes the area form: the
+  // area form's forces are not the gradient of an energy, and under a standing load a structure
+  // in it does not come to rest (docs/theory-fem.md, "Axisymmetric momentum").
+  std::optional<bool> area_weighted_momentum;
 };
 
 struct NamedMaterial {
@@ -278,6 +283,9 @@ struct Model {
     return own ? *own : HourglassControl{run.hourglass, run.hourglass_coefficient};
   }
   double subzonal_of(std::size_t part) const { return parts[part].subzonal.value_or(run.subzonal_pressure); }
+  bool area_weighted_momentum_of(std::size_t part) const {
+    return parts[part].area_weighted_momentum.value_or(run.area_weighted_momentum);
+  }
   ViscosityForm viscosity_form_of(std::size_t part) const {
     return parts[part].viscosity_form.value_or(run.viscosity_form);
   }

@@ -113,9 +113,9 @@ inline Model seeded_pulled_bar(std::shared_ptr<const Material> steel, std::share
   model.mesh.dimension = 2;
   model.materials.push_back({"steel", std::move(steel), {}});
   model.materials.push_back({"seed", std::move(seed), {}});
-  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
   add_block(model.mesh, {"left", 0, {0, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});
   add_block(model.mesh, {"seed", 1, {0.045, 0, 0}, {0.01, 0.01, 0}, {1, 2, 1}});
   add_block(model.mesh, {"right", 2, {0.055, 0, 0}, {0.045, 0.01, 0}, {9, 2, 1}});

@@ -53,9 +53,9 @@ BarResult pull_bar(double h) {
   model.run.end_time = 1.0;
   model.materials.push_back({"concrete", rate_free_concrete(f_t), {}});
   model.materials.push_back({"seed", rate_free_concrete(0.98 * f_t), {}});
-  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
   const double x_seed = 0.5 * (length - h);
   add_block(model.mesh, {"left", 0, {0, 0, 0}, {x_seed, height, 0}, {cells_side, cells_high, 1}});
   add_block(model.mesh, {"seed", 1, {x_seed, 0, 0}, {h, height, 0}, {1, cells_high, 1}});

@@ -103,8 +103,8 @@ TEST(ElementWeights, AConcreteWallWeighsItsMeasuredCost) {
                              {}});
   model.materials.push_back(
       {"concrete", make_material("concrete", "concrete_35mpa_wang2005", SourceLocation{}, {}, {}, {}), {}});
-  model.parts.push_back(Part{"soil", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"wall", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"soil", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"wall", PartKind::fem, 1, {}, {}, {}, {}, {}, {}, {}});
   const std::vector<int> weights = element_weights(model);
   EXPECT_EQ(weights.front(), 10);
   EXPECT_EQ(weights.back(), 59);

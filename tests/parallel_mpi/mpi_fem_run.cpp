@@ -313,8 +313,8 @@ Model rc_beam(GeometryMode mode, Rebar rebar) {
   model.run.max_cycles = cycles;
   model.materials.push_back({"concrete", test::rate_free_concrete(1.0), {}});
   model.materials.push_back({"steel", test::steel_1006(), {}});
-  model.parts.push_back(Part{"beam", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"rebar", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"beam", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"rebar", PartKind::fem, 1, {}, {}, {}, {}, {}, {}, {}});
   // The beam's depth along z in 3-D, along y in plane strain.
   const int up = three_d ? 2 : 1;
   if (rebar == Rebar::layers) {

@@ -47,8 +47,8 @@ Model slab_model(bool layers, bool elastic) {
   else
     model.materials.push_back({"concrete", test::rate_free_concrete(1.0), {}});
   model.materials.push_back({"steel", test::steel_1006(), {}});
-  model.parts.push_back(Part{"slab", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"rebar", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"slab", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"rebar", PartKind::fem, 1, {}, {}, {}, {}, {}, {}, {}});
   const double half = 0.5 * span;
   if (layers) {
     RebarWallSpec wall;

@@ -41,7 +41,7 @@ inline Model pulled_host_strip() {
   model.mesh.dimension = 2;
   model.run.end_time = 1e-3;
   model.materials.push_back({"host", elastic_material({2000.0, 1e8, 5e7, 0.0}, "host"), {}});
-  model.parts.push_back(Part{"host", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"host", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
   add_block(model.mesh, {"host", 0, {0, 0, 0}, {0.1, 0.02, 0}, {5, 1, 1}});
   model.boundaries.push_back(velocity("host.xmin", 0, 0.0));
   model.boundaries.push_back(velocity("host.xmax", 0, 0.1));

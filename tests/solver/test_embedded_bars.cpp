@@ -38,7 +38,7 @@ void stretch(GeometryMode mode, std::array<double, 3> direction, BarOrientation 
   test::ElasticConstants soft{2000.0, 1e8, 5e7, 0.0};
   model.materials.push_back({"host", test::elastic_material(soft, "host"), {}});
   model.materials.push_back({"steel", test::steel_1006(), {}});
-  model.parts.push_back(Part{"host", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"host", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
   const double r0 = mode == GeometryMode::axisymmetric ? 1.0 : 0.0;
   add_block(model.mesh, {"host", 0, {r0, 0, 0}, {0.1, 0.1, 0.1}, {4, 4, 4}});
   // Prescribed homogeneous stretch along n: every node moves with

@@ -18,16 +18,33 @@ using camouflet::test::ElasticConstants;
 
 namespace {
 
-void check_lame(bool area_momentum) {
+// form: "volume", "area", or "mixed" (the inner half of the wall in the area form as its own
+// part, the outer half in the volume form: the nodes where they meet take both).
+void check_lame(const std::string& momentum) {
   test::use_threads(1);
   const ElasticConstants c;
   const double a = 0.1, b = 0.2, p = 1.0e6;
   const int cells = 20;
   const double h = (b - a) / cells;
-  Model model = test::block_model(GeometryMode::axisymmetric,
-                                  {{"tube", 0, {a, 0, 0}, {b - a, h, 0}, {cells, 1, 1}}}, c);
-  model.boundaries.push_back(test::symmetry("tube.ymin", {0, 1, 0}));
-  model.boundaries.push_back(test::symmetry("tube.ymax", {0, 1, 0}));
+  const bool mixed = momentum == "mixed";
+  Model model = mixed ? test::block_model(
+                            GeometryMode::axisymmetric,
+                            {{"tube", 0, {a, 0, 0}, {0.5 * (b - a), h, 0}, {cells / 2, 1, 1}},
+                             {"outer", 1, {0.5 * (a + b), 0, 0}, {0.5 * (b - a), h, 0}, {cells / 2, 1, 1}}},
+                            c)
+                      : test::block_model(GeometryMode::axisymmetric,
+                                          {{"tube", 0, {a, 0, 0}, {b - a, h, 0}, {cells, 1, 1}}}, c);
+  for (const char* block : {"tube", "outer"}) {
+    if (!mixed && std::string(block) == "outer") continue;
+    model.boundaries.push_back(test::symmetry(std::string(block) + ".ymin", {0, 1, 0}));
+    model.boundaries.push_back(test::symmetry(std::string(block) + ".ymax", {0, 1, 0}));
+  }
+  if (mixed) {
+    Part outer = model.parts.front();
+    outer.name = "outer";
+    model.parts.push_back(outer);
+    model.parts.front().area_weighted_momentum = true;
+  }
 
   // Breathing period ~ 2 pi r / c_p; ramp as (1 - cos) over ~8 periods, then hold and average.
   const double period = 2.0 * std::numbers::pi * 0.5 * (a + b) / c.p_wave_speed();
@@ -40,8 +57,10 @@ void check_lame(bool area_momentum) {
   }
   model.boundaries.push_back(test::pressure("tube.xmin", p, history));
   model.run.end_time = ramp + hold;
-  model.run.area_weighted_momentum = area_momentum;
-  const std::string form = area_momentum ? ", area-weighted momentum" : "";
+  model.run.area_weighted_momentum = momentum == "area";
+  const std::string form = momentum == "area" ? ", area-weighted momentum"
+                           : mixed            ? ", inner half in the area form, outer half in the volume form"
+                                              : "";
 
   Solver<2> solver(model);
   std::size_t inner = 0;  // a node on r = a
@@ -73,11 +92,17 @@ void check_lame(bool area_momentum) {
 }  // namespace
 
 TEST(LameCylinder, AxisymmetricThickCylinderUnderInternalPressure) {
-  check_lame(false);
+  check_lame("volume");
 }
 
 // The same in the area-weighted form: the pressure load's nodal shares are
 // planar times the ring factor, as the element forces they meet.
 TEST(LameCylinder, AxisymmetricAreaWeightedThickCylinderUnderInternalPressure) {
-  check_lame(true);
+  check_lame("area");
+}
+
+// Parts of both forms in one mesh (a part's own `axisymmetric_momentum`): each element's force in
+// its own form, the area form's times the node's ring factor, so that both are forces on the ring.
+TEST(LameCylinder, AxisymmetricMixedFormsThickCylinderUnderInternalPressure) {
+  check_lame("mixed");
 }

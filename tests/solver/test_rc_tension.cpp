@@ -60,10 +60,10 @@ Model tie_model(bool layers) {
     model.erosion = {{0.0, 0.99}, {0.0, 0.99}};
   }
   model.materials.push_back({"steel", test::steel_1006(), {}});
-  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"rebar", PartKind::fem, 2, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"left", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"seed", PartKind::fem, 1, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"right", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"rebar", PartKind::fem, 2, {}, {}, {}, {}, {}, {}, {}});
   // The weak seed spans three columns, [0.08, 0.11]; the crack is measured
   // in its middle column, [0.09, 0.10], whose steel neighbours yield too, so
   // the layer there can contract freely.

@@ -55,8 +55,8 @@ Model rebar_model(std::int64_t max_cycles) {
   model.mesh.dimension = 2;
   model.materials.push_back({"concrete", test::rate_free_concrete(1.0), {}});
   model.materials.push_back({"steel", test::steel_1006(), {}});
-  model.parts.push_back(Part{"wall", PartKind::fem, 0, {}, {}, {}, {}, {}, {}});
-  model.parts.push_back(Part{"rebar", PartKind::fem, 1, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"wall", PartKind::fem, 0, {}, {}, {}, {}, {}, {}, {}});
+  model.parts.push_back(Part{"rebar", PartKind::fem, 1, {}, {}, {}, {}, {}, {}, {}});
   RebarWallSpec wall;
   wall.name = "wall";
   wall.concrete_part = 0;

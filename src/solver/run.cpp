@@ -125,6 +125,24 @@ RunSummary run_dimension(const Model& model, const RunOptions& options) {
     const bool report = style != ProgressStyle::none;
     double next_line = model.output.log_interval_s;
     const auto relaxed = solver.relax(*model.run.relaxation, [&](const typename Solver<D>::Relaxation& r) {
+      // A signal stops a relaxation too, without a checkpoint: a restart goes on from a relaxed
+      // state, and a state half relaxed is none. On ranks every 100th cycle, alike on all (the
+      // ranks step in lockstep; mpirun passes the signal to each at its own moment).
+      int signal = stop_requested();
+      if (ranks) {
+        if (r.cycles % 100 != 0) {
+          signal = 0;
+        } else {
+          const double mine = signal;
+          for (const double other : comm.all_gather(std::span<const double>(&mine, 1)))
+            signal = std::max(signal, static_cast<int>(other));
+        }
+      }
+      if (signal)
+        throw RunInterrupted(signal, fmt::format("interrupted by signal {} during the dynamic relaxation, after {:.4g} s "
+                                                 "of relaxation ({} cycles): no checkpoint (a relaxation is not "
+                                                 "resumed); run the case again",
+                                                 signal, r.time, r.cycles));
       if (!report || wall() < next_line) return;
       next_line = wall() + model.output.log_interval_s;
       fmt::print(stderr,

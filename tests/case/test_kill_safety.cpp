@@ -144,6 +144,33 @@ TEST(KillSafety, SigtermWritesCheckpointAndExits130AndRestartIsBitIdentical) {
 
 // A full disk half way (the second snapshot goes to /dev/full): exit 3 with a
 // clear message, after a last checkpoint that a restart can use.
+TEST(KillSafety, SigtermDuringTheDynamicRelaxationExits130) {
+  // A relaxation can run for many minutes before t = 0: one signal must end it as it ends the
+  // transient (exit 130 within seconds), saying that no checkpoint was written.
+  const fs::path root = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "sigterm_relaxation";
+  fs::remove_all(root);
+  const fs::path case_file = root / "case.toml";
+  std::string text = long_case();
+  text.replace(text.find("[run]\n"), 6, "[run]\ngravity = [0, -9.81]\n");
+  text += "\n[run.dynamic_relaxation]\nperiod = 1000.0  # s: far from settled within the test\n";
+  test::write_text(case_file, text);
+  const fs::path out = root / "stopped";
+  const pid_t pid = start_run(case_file, out);
+  const auto limit = clock_type::now() + std::chrono::seconds(20);
+  while (!fs::exists(out) && clock_type::now() < limit) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const auto sent = clock_type::now();
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const double seconds = std::chrono::duration<double>(clock_type::now() - sent).count();
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_LT(seconds, 3.0);
+  const std::string log = test::read_text(root / "stopped.log");
+  EXPECT_NE(log.find("interrupted by signal 15 during the dynamic relaxation"), std::string::npos) << log;
+}
+
 TEST(IoFailure, FullDiskStopsWithExitThreeAfterALastCheckpoint) {
   const fs::path root = fs::path(CAMOUFLET_BINARY_DIR) / "test-output" / "full-disk";
   fs::remove_all(root);

@@ -21,13 +21,25 @@
 // another build's SIMD width) moves a column's displacement by up to 5 %. So
 // each model is run at five CFL numbers within 2e-4 of 0.5, and the ensemble
 // means are compared; the spread is recorded beside them.
+//
+// A longer problem (kLonger; docs/theory/sph.md, "A longer reference") gives both models a
+// cylinder 0.6 m x 1 m, samples them at 1 and 5 ms with gauges at 0, 45 and 90 degrees from the
+// charge and the cavity's radius in those sectors, and compares ten-run ensembles; its 3-D runs are
+// stored in a file (written run by run by a disabled test: they take hours).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iterator>
+#include <map>
+#include <sstream>
+#include <omp.h>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -44,23 +56,45 @@ namespace {
 constexpr double kSpacing = 0.02;       // m
 constexpr double kChargeRadius = 0.06;  // m: 1.44 kg of TNT, 3 particles across its radius
 constexpr double kDepth = 0.3;          // m, charge centre below the ground
-constexpr double kRadius = 0.4;         // m, soil extent from the axis
-constexpr double kBottom = 0.7;         // m, soil bottom below the ground
-constexpr double kEnd = 1.0e-3;         // s
+
+// The soil's extent and the comparison's times. The 1 ms problem is the first reference: a square
+// 3-D domain, compared before the echo of its corners reaches the axis. The longer one gives both
+// models the same free outer surface, a cylinder (3-D: a quarter cylinder), so that every echo
+// reaches both alike and the comparison holds at any time.
+struct Problem {
+  double radius = 0.4;          // m, soil extent from the axis
+  double bottom = 0.7;          // m, soil bottom below the ground
+  bool quarter_cylinder = false;  // 3-D soil: the quarter cylinder r <= radius (else the square)
+  std::vector<double> times{1.0e-3};  // s, when the motion is sampled (the last: the end)
+  int runs = 5;                 // ensemble size (CFL numbers in equal steps over 0.5 +- 2e-4)
+};
+const Problem kFirst{};
+const Problem kLonger{0.6, 1.0, true, {1.0e-3, 5.0e-3}, 10};
 
 constexpr int kProfileBins = 10;  // the profile's bins: initial distance from the axis, one spacing each
+
+// Gauges in the soil at kGaugeDistance from the charge centre, at 0, 45 and 90 degrees from the
+// downward axis: the mean over the soil that starts within 1.5 spacings of the gauge's ring (r-z:
+// its point in the meridian plane), weighted by mass (r-z ring masses), of the displacement and
+// velocity along the direction away from the charge centre.
+constexpr double kGaugeDistance = 0.25;  // m
+constexpr double kGaugeAngles[3] = {0.0, 45.0, 90.0};  // degrees from the downward axis
+constexpr double kCavitySector = 22.5;  // degrees: the cavity's sectors are kGaugeAngles +- this
 
 struct ColumnMotion {
   double uz[3] = {}, ur[3] = {};  // m, at r = 0.5, 1.5, 2.5 spacings
   // Means over the particles in each bin [k dx, (k+1) dx) of the initial distance from the axis
   // (r-z: the columns themselves): the axial displacement (m) and the hoop strain u_r / r0.
   double profile_uz[kProfileBins] = {}, profile_hoop[kProfileBins] = {};
+  // The gauges (m; peak m/s over the run so far) and the cavity's radius in each gauge's sector:
+  // the distance from the charge centre within which 90 % of the sector's explosive mass lies (m).
+  double gauge_u[3] = {}, gauge_peak_v[3] = {}, cavity[3] = {};
   double energy_error = 0.0;
 };
 
 // The charge (a sphere; in 3-D its quarter x, y >= 0) and the soil around it.
 template <int D>
-Model buried_charge_model() {
+Model buried_charge_model(const Problem& problem) {
   Model model;
   model.run.mode = D == 2 ? GeometryMode::axisymmetric : GeometryMode::three_d;
   const int z = D - 1;
@@ -78,9 +112,19 @@ Model buried_charge_model() {
       charge.exclude.push_back(half);
     }
   std::array<double, 3> lo{}, hi{};
-  lo[z] = -kBottom;
-  for (int a = 0; a < D - 1; ++a) hi[a] = kRadius;
+  lo[z] = -problem.bottom;
+  for (int a = 0; a < D - 1; ++a) hi[a] = problem.radius;
   ParticleFillSpec soil = test::box_fill(lo, hi, kSpacing);
+  if (D == 3 && problem.quarter_cylinder) {
+    // The lattice of the box (its bounds at -radius and -bottom keep the cells at (i + 1/2) dx from
+    // the mirror planes), its quarter x, y >= 0.
+    soil.region.shape = ParticleRegion::Shape::cylinder;
+    soil.region.centre = {0.0, 0.0, -problem.bottom};
+    soil.region.axis = {0.0, 0.0, 1.0};
+    soil.region.radius = problem.radius;
+    soil.region.length = problem.bottom;
+    soil.exclude = charge.exclude;
+  }
   soil.exclude.push_back(charge.region);
   test::add_sph_part(model, "tnt",
                      make_material("tnt", "tnt_wang2005", {}, Parameters{}, Parameters{}, Parameters{}),
@@ -113,23 +157,58 @@ struct HoopTerm {
   bool viscous = false;  // [sph] viscosity_hoop
 };
 
+// The soil's gauge rings: for each gauge the particles that start within 1.5 spacings of its ring.
 template <int D>
-ColumnMotion run_column_motion(double cfl, const HoopTerm& hoop) {
-  const Model model = buried_charge_model<D>();
-  SphOptions options;
-  options.viscosity_alpha = 0.2;  // as the generated buried cases
-  options.smoothed_hoop = hoop.smoothed;
-  options.smoothed_hoop_width = hoop.width;
-  options.viscosity_hoop = hoop.viscous;
-  std::vector<MirrorPlane> planes = axis_mirror_planes(model.run.mode);  // r-z: the axis
-  if constexpr (D == 3) planes = {{0, 0.0, PlaneKind::symmetry}, {1, 0.0, PlaneKind::symmetry}};
-  SphSystem<D> sph(model, options, planes);
-  const double e0 = sph.kinetic_energy() + sph.internal_energy();
-  double dt_last = 0.0;
-  const long cycles = test::run_leapfrog_until(sph, kEnd, cfl, &dt_last);
-  const double e_end = test::synchronised_kinetic_energy(sph, dt_last) + sph.internal_energy();
-  ColumnMotion out;
-  out.energy_error = e_end / e0 - 1.0;
+std::array<std::vector<std::size_t>, 3> gauge_particles(const SphSystem<D>& sph) {
+  std::array<std::vector<std::size_t>, 3> members;
+  const auto& p = sph.particles();
+  const int z = D - 1;
+  for (std::size_t i = 0; i < sph.size(); ++i) {
+    if (p.part[i] != 1) continue;
+    const Vec<D> x0 = p.position[i] - p.displacement[i];
+    const double r0 = D == 2 ? x0[0] : std::hypot(x0[0], x0[1]);
+    for (int g = 0; g < 3; ++g) {
+      const double angle = kGaugeAngles[g] * std::numbers::pi / 180.0;
+      const double rg = kGaugeDistance * std::sin(angle), zg = -kDepth - kGaugeDistance * std::cos(angle);
+      if (std::hypot(r0 - rg, x0[z] - zg) < 1.5 * kSpacing) members[static_cast<std::size_t>(g)].push_back(i);
+    }
+  }
+  return members;
+}
+
+// A vector's component along the direction from the charge centre to the meridian point (r, z).
+template <int D>
+double away_from_charge(const Vec<D>& x, const Vec<D>& u) {
+  if constexpr (D == 2) {
+    const double dr = x[0], dz = x[1] + kDepth, n = std::hypot(dr, dz);
+    return (u[0] * dr + u[1] * dz) / n;
+  } else {
+    const double dz = x[2] + kDepth, n = std::sqrt(x[0] * x[0] + x[1] * x[1] + dz * dz);
+    return (u[0] * x[0] + u[1] * x[1] + u[2] * dz) / n;
+  }
+}
+
+// The gauges' mass-weighted means of a per-particle vector (displacement or velocity) along the
+// direction away from the charge, each particle's direction from its initial place.
+template <int D>
+std::array<double, 3> gauge_means(const SphSystem<D>& sph, const std::array<std::vector<std::size_t>, 3>& members,
+                                  const std::vector<Vec<D>>& field) {
+  const auto& p = sph.particles();
+  std::array<double, 3> out{};
+  for (std::size_t g = 0; g < 3; ++g) {
+    double sum = 0.0, mass = 0.0;
+    for (const std::size_t i : members[g]) {
+      sum += p.mass[i] * away_from_charge<D>(p.position[i] - p.displacement[i], field[i]);
+      mass += p.mass[i];
+    }
+    out[g] = sum / mass;
+  }
+  return out;
+}
+
+// The columns, the profile, the gauges' displacements and the cavity of the state reached.
+template <int D>
+void sample(const SphSystem<D>& sph, const std::array<std::vector<std::size_t>, 3>& gauges, ColumnMotion& out) {
   const auto& p = sph.particles();
   const int z = D - 1;
   std::vector<double> r, uz, ur;
@@ -176,69 +255,177 @@ ColumnMotion run_column_motion(double cfl, const HoopTerm& hoop) {
       out.ur[c] = c1 * rc + e3 * rc * rc * rc;
     }
   }
-  std::printf(
-      "%s: %zu particles, %ld cycles, energy %+.3f %%; columns r = 0.5/1.5/2.5 dx: u_z %.4f %.4f %.4f m, "
-      "u_r %.4f %.4f %.4f m\n",
-      D == 2 ? "r-z" : "3-D quarter", sph.size(), cycles, 100.0 * out.energy_error, out.uz[0], out.uz[1],
-      out.uz[2], out.ur[0], out.ur[1], out.ur[2]);
+  const std::array<double, 3> u = gauge_means(sph, gauges, p.displacement);
+  for (int g = 0; g < 3; ++g) out.gauge_u[g] = u[static_cast<std::size_t>(g)];
+  // The cavity: the explosive's mass by distance from the charge centre, sector by sector.
+  for (int g = 0; g < 3; ++g) {
+    std::vector<std::pair<double, double>> by_distance;  // (distance, mass)
+    double total = 0.0;
+    for (std::size_t i = 0; i < sph.size(); ++i) {
+      if (p.part[i] != 0) continue;  // the explosive
+      const double rr = D == 2 ? p.position[i][0] : std::hypot(p.position[i][0], p.position[i][1]);
+      const double dz = -(p.position[i][z] + kDepth);  // downwards from the centre
+      const double angle = std::atan2(rr, dz) * 180.0 / std::numbers::pi;
+      if (std::abs(angle - kGaugeAngles[g]) > kCavitySector) continue;
+      by_distance.push_back({std::hypot(rr, dz), p.mass[i]});
+      total += p.mass[i];
+    }
+    std::sort(by_distance.begin(), by_distance.end());
+    double held = 0.0;
+    for (const auto& [distance, mass] : by_distance) {
+      held += mass;
+      out.cavity[g] = distance;
+      if (held >= 0.9 * total) break;
+    }
+  }
+}
+
+// One run of the problem in r-z (D = 2) or 3-D at the given CFL number: the motion at each of
+// the problem's times.
+template <int D>
+std::vector<ColumnMotion> run_column_motion(const Problem& problem, double cfl, const HoopTerm& hoop,
+                                            int threads = 1) {
+  const Model model = buried_charge_model<D>(problem);
+  SphOptions options;
+  options.viscosity_alpha = 0.2;  // as the generated buried cases
+  options.smoothed_hoop = hoop.smoothed;
+  options.smoothed_hoop_width = hoop.width;
+  options.viscosity_hoop = hoop.viscous;
+  std::vector<MirrorPlane> planes = axis_mirror_planes(model.run.mode);  // r-z: the axis
+  if constexpr (D == 3) planes = {{0, 0.0, PlaneKind::symmetry}, {1, 0.0, PlaneKind::symmetry}};
+  SphSystem<D> sph(model, options, planes);
+  const auto gauges = gauge_particles(sph);
+  const double e0 = sph.kinetic_energy() + sph.internal_energy();
+  std::vector<ColumnMotion> out;
+  double peak[3] = {};
+  const auto track_peaks = [&] {
+    const std::array<double, 3> v = gauge_means(sph, gauges, sph.particles().velocity);
+    for (int g = 0; g < 3; ++g) peak[g] = std::max(peak[g], v[static_cast<std::size_t>(g)]);
+  };
+  // The variable-step leapfrog of test::run_leapfrog_until, landing on each sampling time.
+  omp_set_num_threads(threads);
+  long cycles = 0;
+  double t = 0.0, dt_last = 0.0;
+  sph.compute_accelerations();
+  for (const double until : problem.times) {
+    while (t < until * (1.0 - 1e-12)) {
+      double dt = cfl * sph.stable_time_step().dt;
+      if (t + dt > until) dt = until - t;
+      t += dt;
+      sph.kick(0.5 * (dt_last + dt));
+      sph.drift(dt);
+      sph.update_state(dt, t);
+      sph.compute_accelerations();
+      dt_last = dt;
+      ++cycles;
+      track_peaks();
+    }
+    ColumnMotion m;
+    sample(sph, gauges, m);
+    for (int g = 0; g < 3; ++g) m.gauge_peak_v[g] = peak[g];
+    m.energy_error = (test::synchronised_kinetic_energy(sph, dt_last) + sph.internal_energy()) / e0 - 1.0;
+    std::printf(
+        "%s, %.0f ms: %zu particles, %ld cycles, energy %+.3f %%; columns r = 0.5/1.5/2.5 dx: u_z %.4f %.4f "
+        "%.4f m, u_r %.4f %.4f %.4f m; gauges 0/45/90 deg: u %.4f %.4f %.4f m, peak v %.2f %.2f %.2f m/s; "
+        "cavity %.3f %.3f %.3f m\n",
+        D == 2 ? "r-z" : "3-D quarter", 1e3 * until, sph.size(), cycles, 100.0 * m.energy_error, m.uz[0],
+        m.uz[1], m.uz[2], m.ur[0], m.ur[1], m.ur[2], m.gauge_u[0], m.gauge_u[1], m.gauge_u[2],
+        m.gauge_peak_v[0], m.gauge_peak_v[1], m.gauge_peak_v[2], m.cavity[0], m.cavity[1], m.cavity[2]);
+    std::fflush(stdout);
+    out.push_back(m);
+  }
   return out;
 }
 
 }  // namespace
 
-// Ensemble means of each model's column motion over CFL numbers within 2e-4 of 0.5, with the
-// spread (largest minus smallest over the mean) of each column's displacements.
+// Ensemble means of each model's motion over CFL numbers in equal steps within 2e-4 of 0.5, at one
+// of the problem's times, with the spread (largest minus smallest over the mean) of each column's
+// displacements and the standard error of every mean (the runs' standard deviation / sqrt(n)).
 struct Ensemble {
-  ColumnMotion mean;
+  ColumnMotion mean, error;  // error: standard errors of the means (m, m/s)
   double uz_spread[3] = {}, ur_spread[3] = {};
   double worst_energy_error = 0.0;
+  int runs = 0;
 };
 
-template <int D>
-Ensemble ensemble(const HoopTerm& hoop = {}) {
-  const double cfls[] = {0.4998, 0.4999, 0.5, 0.5001, 0.5002};
-  Ensemble e;
-  double uz_min[3], uz_max[3], ur_min[3], ur_max[3];
-  for (int c = 0; c < 3; ++c) uz_min[c] = ur_min[c] = 1e30, uz_max[c] = ur_max[c] = -1e30;
-  for (const double cfl : cfls) {
-    const ColumnMotion m = run_column_motion<D>(cfl, hoop);
-    e.worst_energy_error = std::max(e.worst_energy_error, std::abs(m.energy_error));
-    for (int c = 0; c < 3; ++c) {
-      e.mean.uz[c] += m.uz[c] / std::size(cfls);
-      e.mean.ur[c] += m.ur[c] / std::size(cfls);
-    }
-    for (int bin = 0; bin < kProfileBins; ++bin) {
-      e.mean.profile_uz[bin] += m.profile_uz[bin] / std::size(cfls);
-      e.mean.profile_hoop[bin] += m.profile_hoop[bin] / std::size(cfls);
-    }
-    for (int c = 0; c < 3; ++c) {
-      uz_min[c] = std::min(uz_min[c], m.uz[c]), uz_max[c] = std::max(uz_max[c], m.uz[c]);
-      ur_min[c] = std::min(ur_min[c], m.ur[c]), ur_max[c] = std::max(ur_max[c], m.ur[c]);
-    }
-  }
+// The quantities of a ColumnMotion that the ensembles average, as one list (mean and error alike).
+std::vector<std::pair<std::string, double*>> named_fields(ColumnMotion& m) {
+  std::vector<std::pair<std::string, double*>> f;
   for (int c = 0; c < 3; ++c) {
-    e.uz_spread[c] = (uz_max[c] - uz_min[c]) / std::abs(e.mean.uz[c]);
-    e.ur_spread[c] = (ur_max[c] - ur_min[c]) / std::abs(e.mean.ur[c]);
+    f.push_back({fmt::format("column{}_uz", c + 1), &m.uz[c]});
+    f.push_back({fmt::format("column{}_ur", c + 1), &m.ur[c]});
   }
-  return e;
+  for (int b = 0; b < kProfileBins; ++b) {
+    f.push_back({fmt::format("bin{}_uz", b), &m.profile_uz[b]});
+    f.push_back({fmt::format("bin{}_hoop", b), &m.profile_hoop[b]});
+  }
+  for (int g = 0; g < 3; ++g) {
+    const int angle = static_cast<int>(kGaugeAngles[g]);
+    f.push_back({fmt::format("gauge{}_u", angle), &m.gauge_u[g]});
+    f.push_back({fmt::format("gauge{}_peak_v", angle), &m.gauge_peak_v[g]});
+    f.push_back({fmt::format("cavity{}", angle), &m.cavity[g]});
+  }
+  return f;
 }
 
-// Both ensembles once, shared by the tests below (about 3 min on one core).
+std::vector<double*> fields(ColumnMotion& m) {
+  std::vector<double*> f;
+  for (auto& [name, value] : named_fields(m)) f.push_back(value);
+  return f;
+}
+
+template <int D>
+std::vector<Ensemble> ensemble(const Problem& problem, const HoopTerm& hoop = {}, int threads = 1) {
+  std::vector<std::vector<ColumnMotion>> all;  // [run][time]
+  const double five[] = {0.4998, 0.4999, 0.5, 0.5001, 0.5002};  // the first ensembles' numbers as written
+  for (int k = 0; k < problem.runs; ++k) {
+    const double cfl = problem.runs == 5 ? five[k] : 0.4998 + 4e-4 * k / (problem.runs - 1);
+    all.push_back(run_column_motion<D>(problem, cfl, hoop, threads));
+  }
+  std::vector<Ensemble> out(problem.times.size());
+  const double n = problem.runs;
+  for (std::size_t t = 0; t < problem.times.size(); ++t) {
+    Ensemble& e = out[t];
+    e.runs = problem.runs;
+    const std::vector<double*> mean = fields(e.mean), error = fields(e.error);
+    for (std::size_t q = 0; q < mean.size(); ++q) {
+      double sum = 0.0, squares = 0.0;
+      for (auto& run : all) sum += *fields(run[t])[q];
+      *mean[q] = sum / n;
+      for (auto& run : all) squares += std::pow(*fields(run[t])[q] - *mean[q], 2);
+      *error[q] = std::sqrt(squares / (n - 1.0) / n);
+    }
+    for (int c = 0; c < 3; ++c) {
+      double uz_min = 1e30, uz_max = -1e30, ur_min = 1e30, ur_max = -1e30;
+      for (const auto& run : all) {
+        uz_min = std::min(uz_min, run[t].uz[c]), uz_max = std::max(uz_max, run[t].uz[c]);
+        ur_min = std::min(ur_min, run[t].ur[c]), ur_max = std::max(ur_max, run[t].ur[c]);
+      }
+      e.uz_spread[c] = (uz_max - uz_min) / std::abs(e.mean.uz[c]);
+      e.ur_spread[c] = (ur_max - ur_min) / std::abs(e.mean.ur[c]);
+    }
+    for (const auto& run : all) e.worst_energy_error = std::max(e.worst_energy_error, std::abs(run[t].energy_error));
+  }
+  return out;
+}
+
+// Both ensembles of the first problem once, shared by the tests below (about 3 min on one core).
 const std::pair<Ensemble, Ensemble>& runs() {
-  static const std::pair<Ensemble, Ensemble> both{ensemble<2>(), ensemble<3>()};
+  static const std::pair<Ensemble, Ensemble> both{ensemble<2>(kFirst)[0], ensemble<3>(kFirst)[0]};
   return both;
 }
 
 // The r-z ensemble with [sph] smoothed_hoop (a few seconds more: r-z is 700 particles).
 const Ensemble& smoothed_runs() {
-  static const Ensemble rz{ensemble<2>({true, 0.0})};
+  static const Ensemble rz{ensemble<2>(kFirst, {true, 0.0})[0]};
   return rz;
 }
 
 // The r-z ensemble with the smoothed hoop term, its band of h/2 and the viscosity's hoop term
 // ([sph] smoothed_hoop_width = 0.5, viscosity_hoop = true).
 const Ensemble& band_runs() {
-  static const Ensemble rz{ensemble<2>({true, 0.5, true})};
+  static const Ensemble rz{ensemble<2>(kFirst, {true, 0.5, true})[0]};
   return rz;
 }
 
@@ -351,4 +538,123 @@ TEST(SphAxisReference, SmoothedHoopProfileRecorded) {
 // column is thrown sideways twice as far as in 3-D (its u_r is 4 mm there).
 TEST(SphAxisReference, SmoothedHoopBandProfileRecorded) {
   record_against_reference(band_runs(), "the smoothed hoop term, its band of h/2 and the viscosity's hoop term");
+}
+
+// The longer problem (the quarter cylinder, 1 and 5 ms): its 3-D runs are stored, one row per
+// run, time and quantity, in tests/sph/data/axis_reference_3d.txt (a 3-D run to 5 ms takes tens of
+// minutes on one core); the tests below run the r-z ensembles against their means. Write runs
+// (indices of the ensemble's CFL numbers, 0 to kLonger.runs - 1) with
+//   AXIS_REFERENCE_RUNS=0,1,2 AXIS_REFERENCE_OUT=part0.txt build/tests/test_sph_long \
+//     --gtest_also_run_disabled_tests \
+//     --gtest_filter=SphAxisReference.DISABLED_WriteLongerThreeDimensionalReference
+// (AXIS_REFERENCE_THREADS: OpenMP threads per run) and concatenate the parts under a header line
+// naming the commit, date and machine.
+const std::filesystem::path kStoredReference =
+    std::filesystem::path(CAMOUFLET_SOURCE_DIR) / "tests" / "sph" / "data" / "axis_reference_3d.txt";
+
+double longer_cfl(int run) {
+  return 0.4998 + 4e-4 * run / (kLonger.runs - 1);
+}
+
+TEST(SphAxisReference, DISABLED_WriteLongerThreeDimensionalReference) {
+  std::vector<int> runs;
+  const char* list = std::getenv("AXIS_REFERENCE_RUNS");
+  std::istringstream items(list ? list : "");
+  for (std::string item; std::getline(items, item, ',');) runs.push_back(std::stoi(item));
+  if (runs.empty())
+    for (int k = 0; k < kLonger.runs; ++k) runs.push_back(k);
+  const char* threads = std::getenv("AXIS_REFERENCE_THREADS");
+  const char* path = std::getenv("AXIS_REFERENCE_OUT");
+  std::ofstream out(path ? std::filesystem::path(path) : kStoredReference, std::ios::app);
+  for (const int run : runs) {
+    std::vector<ColumnMotion> motion =
+        run_column_motion<3>(kLonger, longer_cfl(run), {}, threads ? std::atoi(threads) : 1);
+    for (std::size_t t = 0; t < motion.size(); ++t) {
+      for (auto& [name, value] : named_fields(motion[t]))
+        out << fmt::format("{} {:g} {} {:.9g}\n", run, 1e3 * kLonger.times[t], name, *value);
+      out << fmt::format("{} {:g} energy_error {:.9g}\n", run, 1e3 * kLonger.times[t], motion[t].energy_error);
+    }
+    out.flush();
+  }
+}
+
+// The stored 3-D runs as ensembles, by time (ms): means, standard errors, run count, worst energy
+// error.
+std::map<double, Ensemble> read_stored_reference() {
+  std::ifstream in(kStoredReference);
+  std::map<double, std::map<int, std::map<std::string, double>>> rows;  // time, run, quantity
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    int run = 0;
+    double time_ms = 0.0, value = 0.0;
+    std::string name;
+    if (row >> run >> time_ms >> name >> value) rows[time_ms][run][name] = value;
+  }
+  std::map<double, Ensemble> out;
+  for (const auto& [time_ms, by_run] : rows) {
+    Ensemble& e = out[time_ms];
+    e.runs = static_cast<int>(by_run.size());
+    const double n = e.runs;
+    const auto mean = named_fields(e.mean);
+    const auto error = fields(e.error);
+    for (std::size_t q = 0; q < mean.size(); ++q) {
+      double sum = 0.0, squares = 0.0;
+      for (const auto& [run, values] : by_run) sum += values.at(mean[q].first);
+      *mean[q].second = sum / n;
+      for (const auto& [run, values] : by_run) squares += std::pow(values.at(mean[q].first) - *mean[q].second, 2);
+      *error[q] = n > 1 ? std::sqrt(squares / (n - 1.0) / n) : 0.0;
+    }
+    for (const auto& [run, values] : by_run)
+      e.worst_energy_error = std::max(e.worst_energy_error, std::abs(values.at("energy_error")));
+  }
+  return out;
+}
+
+// An r-z ensemble of the longer problem against the stored 3-D one, recorded quantity by quantity
+// as "r-z / 3-D = ratio (standard errors of the two means, relative)", inside when the ratio is
+// within 5 % of 1 (the target of the axis work) and both standard errors below 2 %.
+void record_longer_against_stored(const std::vector<Ensemble>& rz, const std::string& variant) {
+  const std::map<double, Ensemble> stored = read_stored_reference();
+  ASSERT_FALSE(stored.empty()) << "no stored 3-D runs in " << kStoredReference;
+  for (std::size_t t = 0; t < kLonger.times.size(); ++t) {
+    const double time_ms = 1e3 * kLonger.times[t];
+    ASSERT_TRUE(stored.count(time_ms)) << "the stored reference has no rows at " << time_ms << " ms";
+    Ensemble ref = stored.at(time_ms);
+    Ensemble e = rz[t];
+    EXPECT_LT(e.worst_energy_error, 0.01);
+    EXPECT_LT(ref.worst_energy_error, 0.01);
+    const auto mean = named_fields(e.mean);
+    const auto error = fields(e.error);
+    const auto ref_mean = fields(ref.mean);
+    const auto ref_error = fields(ref.error);
+    for (std::size_t q = 0; q < mean.size(); ++q) {
+      const std::string& name = mean[q].first;
+      const double ratio = *mean[q].second / *ref_mean[q];
+      const double rz_rel = std::abs(*error[q] / *mean[q].second), ref_rel = std::abs(*ref_error[q] / *ref_mean[q]);
+      std::printf("%s, %g ms, %s: r-z %.5g +- %.2g, 3-D %.5g +- %.2g, ratio %.3f\n", variant.c_str(), time_ms,
+                  name.c_str(), *mean[q].second, *error[q], *ref_mean[q], *ref_error[q], ratio);
+      if (name.rfind("bin", 0) == 0) continue;  // the profile: in the printout only
+      test::record_observation(
+          fmt::format("Buried 1.4 kg TNT, SPH at 0.02 m in a cylinder {:g} m x {:g} m, {:g} ms, r-z with {}: {}; "
+                      "means of {} r-z and {} 3-D runs",
+                      kLonger.radius, kLonger.bottom, time_ms, variant, name, e.runs, ref.runs),
+          "1 within 5 %, standard errors below 2 % (the same problem in 3-D, quarter cylinder, no axis; stored)",
+          fmt::format("r-z / 3-D {:.3f} (standard errors {:.1f} %; {:.1f} %)", ratio, 100.0 * rz_rel,
+                      100.0 * ref_rel),
+          std::abs(ratio - 1.0) < 0.05 && rz_rel < 0.02 && ref_rel < 0.02);
+    }
+  }
+}
+
+// Disabled until tests/sph/data/axis_reference_3d.txt holds the ten 3-D runs (about 7 core-hours
+// on the 2-vCPU guest; docs/theory/sph.md, "A longer reference").
+TEST(SphAxisReference, DISABLED_LongerProblemPointHoopTermsAgainstStoredReference) {
+  record_longer_against_stored(ensemble<2>(kLonger), "the point hoop terms (the [sph] defaults)");
+}
+
+TEST(SphAxisReference, DISABLED_LongerProblemGeneratorAxisTermsAgainstStoredReference) {
+  record_longer_against_stored(ensemble<2>(kLonger, {true, 0.5, true}),
+                               "the band of h/2 and the viscosity's hoop term (the buried-structure generator's)");
 }

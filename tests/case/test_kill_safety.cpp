@@ -61,6 +61,18 @@ pid_t start_run(const fs::path& case_file, const fs::path& out) {
   return pid;
 }
 
+// Sends SIGTERM to a run and waits for it: it must exit with 130 within 3 s.
+void expect_sigterm_exits_130(pid_t pid) {
+  const auto sent = clock_type::now();
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const double seconds = std::chrono::duration<double>(clock_type::now() - sent).count();
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_LT(seconds, 3.0);
+}
+
 // Every line ends with '\n' and has the header's number of fields.
 void expect_complete_lines(const fs::path& csv) {
   const std::string text = test::read_text(csv);
@@ -120,14 +132,7 @@ TEST(KillSafety, SigtermWritesCheckpointAndExits130AndRestartIsBitIdentical) {
   const pid_t pid = start_run(case_file, out);
   wait_for_start(out);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  const auto sent = clock_type::now();
-  kill(pid, SIGTERM);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  const double seconds = std::chrono::duration<double>(clock_type::now() - sent).count();
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
-  EXPECT_LT(seconds, 3.0);
+  expect_sigterm_exits_130(pid);
   const std::string log = test::read_text(root / "stopped.log");
   EXPECT_NE(log.find("interrupted by signal 15"), std::string::npos) << log;
   const auto list = list_checkpoints(out / "checkpoints");
@@ -159,14 +164,7 @@ TEST(KillSafety, SigtermDuringTheDynamicRelaxationExits130) {
   const auto limit = clock_type::now() + std::chrono::seconds(20);
   while (!fs::exists(out) && clock_type::now() < limit) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  const auto sent = clock_type::now();
-  kill(pid, SIGTERM);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  const double seconds = std::chrono::duration<double>(clock_type::now() - sent).count();
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
-  EXPECT_LT(seconds, 3.0);
+  expect_sigterm_exits_130(pid);
   const std::string log = test::read_text(root / "stopped.log");
   EXPECT_NE(log.find("interrupted by signal 15 during the dynamic relaxation"), std::string::npos) << log;
 }

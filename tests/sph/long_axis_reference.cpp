@@ -302,33 +302,19 @@ std::vector<ColumnMotion> run_column_motion(const Problem& problem, double cfl, 
     const std::array<double, 3> v = gauge_means(sph, gauges, sph.particles().velocity);
     for (int g = 0; g < 3; ++g) peak[g] = std::max(peak[g], v[static_cast<std::size_t>(g)]);
   };
-  // The variable-step leapfrog of test::run_leapfrog_until, landing on each sampling time.
   omp_set_num_threads(threads);
-  long cycles = 0;
-  double t = 0.0, dt_last = 0.0;
-  sph.compute_accelerations();
+  test::LeapfrogClock clock;  // landing on each sampling time
   for (const double until : problem.times) {
-    while (t < until * (1.0 - 1e-12)) {
-      double dt = cfl * sph.stable_time_step().dt;
-      if (t + dt > until) dt = until - t;
-      t += dt;
-      sph.kick(0.5 * (dt_last + dt));
-      sph.drift(dt);
-      sph.update_state(dt, t);
-      sph.compute_accelerations();
-      dt_last = dt;
-      ++cycles;
-      track_peaks();
-    }
+    test::advance_leapfrog(sph, clock, until, cfl, track_peaks);
     ColumnMotion m;
     sample(sph, gauges, m);
     for (int g = 0; g < 3; ++g) m.gauge_peak_v[g] = peak[g];
-    m.energy_error = (test::synchronised_kinetic_energy(sph, dt_last) + sph.internal_energy()) / e0 - 1.0;
+    m.energy_error = (test::synchronised_kinetic_energy(sph, clock.dt_previous) + sph.internal_energy()) / e0 - 1.0;
     std::printf(
         "%s, %.0f ms: %zu particles, %ld cycles, energy %+.3f %%; columns r = 0.5/1.5/2.5 dx: u_z %.4f %.4f "
         "%.4f m, u_r %.4f %.4f %.4f m; gauges 0/45/90 deg: u %.4f %.4f %.4f m, peak v %.2f %.2f %.2f m/s; "
         "cavity %.3f %.3f %.3f m\n",
-        D == 2 ? "r-z" : "3-D quarter", 1e3 * until, sph.size(), cycles, 100.0 * m.energy_error, m.uz[0],
+        D == 2 ? "r-z" : "3-D quarter", 1e3 * until, sph.size(), clock.cycles, 100.0 * m.energy_error, m.uz[0],
         m.uz[1], m.uz[2], m.ur[0], m.ur[1], m.ur[2], m.gauge_u[0], m.gauge_u[1], m.gauge_u[2],
         m.gauge_peak_v[0], m.gauge_peak_v[1], m.gauge_peak_v[2], m.cavity[0], m.cavity[1], m.cavity[2]);
     std::fflush(stdout);

@@ -104,33 +104,45 @@ long run_until(sph::SphSystem<D>& system, double t_end, double cfl, long max_cyc
   return cycles;
 }
 
-// Steps to t_end with the variable-step leapfrog of the solver (solver.cpp,
-// FemPackage::kick): the kick at t_n spans the mean of the two half steps
-// (the first one dt/2), so the scheme stays second order while the step
-// changes from cycle to cycle; run_until() kicks with the new step and loses
-// energy to first order when the step grows fast (a point blast's first cycles).
-// Returns the number of cycles; the last step goes to *dt_last.
+// Where a variable-step leapfrog stands: its time, its last step and cycles so far.
+struct LeapfrogClock {
+  double t = 0.0, dt_previous = 0.0;
+  long cycles = 0;
+};
+
+// Steps on from `clock` to t_end with the variable-step leapfrog of the solver (solver.cpp,
+// FemPackage::kick): the kick at t_n spans the mean of the two half steps (the first one dt/2),
+// so the scheme stays second order while the step changes from cycle to cycle; run_until() kicks
+// with the new step and loses energy to first order when the step grows fast (a point blast's
+// first cycles). The last step lands on t_end; the accelerations are computed on the first call.
+template <int D>
+void advance_leapfrog(sph::SphSystem<D>& system, LeapfrogClock& clock, double t_end, double cfl,
+                      const std::function<void()>& after_each_cycle = {}) {
+  if (clock.cycles == 0) system.compute_accelerations();
+  while (clock.t < t_end * (1.0 - 1e-12)) {
+    double dt = cfl * system.stable_time_step().dt;
+    if (clock.t + dt > t_end) dt = t_end - clock.t;
+    clock.t += dt;
+    system.kick(0.5 * (clock.dt_previous + dt));
+    system.drift(dt);
+    system.update_state(dt, clock.t);
+    system.compute_accelerations();
+    clock.dt_previous = dt;
+    ++clock.cycles;
+    if (after_each_cycle) after_each_cycle();
+  }
+}
+
+// From t = 0 to t_end on one thread (advance_leapfrog). Returns the number of cycles; the last
+// step goes to *dt_last.
 template <int D>
 long run_leapfrog_until(sph::SphSystem<D>& system, double t_end, double cfl, double* dt_last = nullptr,
                         const std::function<void()>& after_each_cycle = {}) {
   omp_set_num_threads(1);
-  double t = 0.0, dt_previous = 0.0;
-  long cycles = 0;
-  system.compute_accelerations();
-  while (t < t_end * (1.0 - 1e-12)) {
-    double dt = cfl * system.stable_time_step().dt;
-    if (t + dt > t_end) dt = t_end - t;
-    t += dt;
-    system.kick(0.5 * (dt_previous + dt));
-    system.drift(dt);
-    system.update_state(dt, t);
-    system.compute_accelerations();
-    dt_previous = dt;
-    ++cycles;
-    if (after_each_cycle) after_each_cycle();
-  }
-  if (dt_last) *dt_last = dt_previous;
-  return cycles;
+  LeapfrogClock clock;
+  advance_leapfrog(system, clock, t_end, cfl, after_each_cycle);
+  if (dt_last) *dt_last = clock.dt_previous;
+  return clock.cycles;
 }
 
 // Kinetic energy at the time of the positions after run_leapfrog_until(),

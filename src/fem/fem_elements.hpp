@@ -116,11 +116,9 @@ class FemElements {
   // over the node's area mass M_a. Keeps a spherical flow spherical on rays
   // from a centre; conserves energy only to the mesh's truncation error
   // (docs/theory-fem.md, "Axisymmetric momentum").
-  void set_area_weighted_momentum(bool on) { area_weighted_ = on; }
-  // Per element (a part's own `axisymmetric_momentum`): nonzero for the area form. Nodes shared
-  // by elements of both forms take each element's force in its own form (the area form's times
-  // the node's ring factor, so both are forces on the ring). Forms all alike: as
-  // set_area_weighted_momentum.
+  // Per element (the run's `axisymmetric_momentum` or a part's own): nonzero for the area form.
+  // Nodes shared by elements of both forms take each element's force in its own form (the area
+  // form's times the node's ring factor, so both are forces on the ring).
   void set_area_forms(std::vector<char> per_element);
   // Whether any element is in the area form.
   bool area_weighted_momentum() const { return area_weighted_; }

@@ -46,10 +46,9 @@ FemPackage<D>::FemPackage(const Model& model, const NodeSharing* sharing) : mode
 
   try {
     elements = FemElements<D>(mesh, mode, position);
-    elements.set_area_weighted_momentum(mode == GeometryMode::axisymmetric &&
-                                        model.run.area_weighted_momentum);
     if (mode == GeometryMode::axisymmetric) {
-      // Each element its part's form (Model::area_weighted_momentum_of), stored only where they differ.
+      // Each element its part's momentum form (Model::area_weighted_momentum_of, the run's unless
+      // the part has its own), stored only where they differ.
       std::vector<char> area(elements.size());
       for (std::size_t e = 0; e < area.size(); ++e)
         area[e] = model.area_weighted_momentum_of(static_cast<std::size_t>(mesh.element_part[e])) ? 1 : 0;

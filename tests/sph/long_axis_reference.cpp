@@ -361,6 +361,21 @@ std::vector<double*> fields(ColumnMotion& m) {
   return f;
 }
 
+// The means and standard errors (the runs' standard deviation / sqrt(n)) of every quantity:
+// samples[run][q] in the order of fields().
+void average_runs(const std::vector<std::vector<double>>& samples, Ensemble& e) {
+  e.runs = static_cast<int>(samples.size());
+  const double n = e.runs;
+  const std::vector<double*> mean = fields(e.mean), error = fields(e.error);
+  for (std::size_t q = 0; q < mean.size(); ++q) {
+    double sum = 0.0, squares = 0.0;
+    for (const auto& run : samples) sum += run[q];
+    *mean[q] = sum / n;
+    for (const auto& run : samples) squares += std::pow(run[q] - *mean[q], 2);
+    *error[q] = n > 1 ? std::sqrt(squares / (n - 1.0) / n) : 0.0;
+  }
+}
+
 template <int D>
 std::vector<Ensemble> ensemble(const Problem& problem, const HoopTerm& hoop = {}, int threads = 1) {
   std::vector<std::vector<ColumnMotion>> all;  // [run][time]
@@ -370,18 +385,14 @@ std::vector<Ensemble> ensemble(const Problem& problem, const HoopTerm& hoop = {}
     all.push_back(run_column_motion<D>(problem, cfl, hoop, threads));
   }
   std::vector<Ensemble> out(problem.times.size());
-  const double n = problem.runs;
   for (std::size_t t = 0; t < problem.times.size(); ++t) {
     Ensemble& e = out[t];
-    e.runs = problem.runs;
-    const std::vector<double*> mean = fields(e.mean), error = fields(e.error);
-    for (std::size_t q = 0; q < mean.size(); ++q) {
-      double sum = 0.0, squares = 0.0;
-      for (auto& run : all) sum += *fields(run[t])[q];
-      *mean[q] = sum / n;
-      for (auto& run : all) squares += std::pow(*fields(run[t])[q] - *mean[q], 2);
-      *error[q] = std::sqrt(squares / (n - 1.0) / n);
+    std::vector<std::vector<double>> samples;
+    for (auto& run : all) {
+      samples.emplace_back();
+      for (const double* value : fields(run[t])) samples.back().push_back(*value);
     }
+    average_runs(samples, e);
     for (int c = 0; c < 3; ++c) {
       double uz_min = 1e30, uz_max = -1e30, ur_min = 1e30, ur_max = -1e30;
       for (const auto& run : all) {
@@ -530,9 +541,10 @@ TEST(SphAxisReference, SmoothedHoopBandProfileRecorded) {
 // run, time and quantity, in tests/sph/data/axis_reference_3d.txt (a 3-D run to 5 ms takes tens of
 // minutes on one core); the tests below run the r-z ensembles against their means. Write runs
 // (indices of the ensemble's CFL numbers, 0 to kLonger.runs - 1) with
-//   AXIS_REFERENCE_RUNS=0,1,2 AXIS_REFERENCE_OUT=part0.txt build/tests/test_sph_long \
-//     --gtest_also_run_disabled_tests \
+//   AXIS_REFERENCE_RUNS=0,1,2 AXIS_REFERENCE_OUT=part0.txt build/tests/test_sph_long
+//     --gtest_also_run_disabled_tests
 //     --gtest_filter=SphAxisReference.DISABLED_WriteLongerThreeDimensionalReference
+// (one command line)
 // (AXIS_REFERENCE_THREADS: OpenMP threads per run) and concatenate the parts under a header line
 // naming the commit, date and machine.
 const std::filesystem::path kStoredReference =
@@ -581,17 +593,13 @@ std::map<double, Ensemble> read_stored_reference() {
   std::map<double, Ensemble> out;
   for (const auto& [time_ms, by_run] : rows) {
     Ensemble& e = out[time_ms];
-    e.runs = static_cast<int>(by_run.size());
-    const double n = e.runs;
-    const auto mean = named_fields(e.mean);
-    const auto error = fields(e.error);
-    for (std::size_t q = 0; q < mean.size(); ++q) {
-      double sum = 0.0, squares = 0.0;
-      for (const auto& [run, values] : by_run) sum += values.at(mean[q].first);
-      *mean[q].second = sum / n;
-      for (const auto& [run, values] : by_run) squares += std::pow(values.at(mean[q].first) - *mean[q].second, 2);
-      *error[q] = n > 1 ? std::sqrt(squares / (n - 1.0) / n) : 0.0;
+    const auto names = named_fields(e.mean);
+    std::vector<std::vector<double>> samples;
+    for (const auto& [run, values] : by_run) {
+      samples.emplace_back();
+      for (const auto& [name, unused] : names) samples.back().push_back(values.at(name));
     }
+    average_runs(samples, e);
     for (const auto& [run, values] : by_run)
       e.worst_energy_error = std::max(e.worst_energy_error, std::abs(values.at("energy_error")));
   }

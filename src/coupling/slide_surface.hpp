@@ -15,7 +15,9 @@
 // spring's potential k d^2 / 2 is too: the nearest face the node projected onto (the first form)
 // left a node in a valley without force and gave it the full depth when its foot came back onto a
 // face, and that jump fed energy into the 3-D box (coarse3d, stopped at 39 ms). "Behind" is behind
-// the face, or, at an edge or corner, behind the sum of the normals that share it; where the
+// the face, or, at an edge or corner, behind its pseudonormal: the sum of the normals of the
+// pieces the surface's topology puts there, angle-weighted at a corner (Baerentzen and Aanaes
+// 2005), not of those whose closest point ties with the foot's, which rounding can drop; where the
 // closest point lies on the rim of the other side's surface (an edge or corner bounding one face
 // only) the node is beside that surface and meets it only within 1e-3 of a face size.
 // m_eff the mass of the node-face pair (1/m_eff = 1/m_node + sum_a w_a^2 / m_a, w_a the face
@@ -95,6 +97,11 @@ class SlideSurfaces {
     // nodes on it (sorted).
     std::vector<std::pair<std::int64_t, std::int64_t>> rim_edges;
     std::vector<std::int64_t> rim_nodes;
+    // The pieces (face * 2 + piece: a segment in 2-D, one of a quad's two triangles in 3-D) that
+    // hold each node of `nodes`: those of nodes[i] at piece_list[piece_start[i] ..
+    // piece_start[i + 1]).
+    std::vector<std::size_t> piece_start;
+    std::vector<std::size_t> piece_list;
   };
   struct Surface {
     Side a, b;
@@ -112,6 +119,11 @@ class SlideSurfaces {
     bool interior = false;  // inside the piece, not on its edge or corner
     double distance2 = std::numeric_limits<double>::infinity();
   };
+  // The nodes of piece `piece` of face k: a segment's 2, a triangle's 3.
+  static std::array<std::int64_t, 3> piece_nodes(const Side& faces, std::size_t k, int piece);
+  // Fills side.piece_start and side.piece_list from its faces.
+  static void index_pieces(Side& side);
+
   template <class Point>
   static bool closest_foot(const Side& faces, std::size_t k, int piece, const Vec<D>& p, const Point& point,
                            Foot& foot);

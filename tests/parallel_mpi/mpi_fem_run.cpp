@@ -227,8 +227,12 @@ void compare_with_serial(const Model& model, VelocityField velocity, double v_re
                        "serial run; masses 1e-14; displacement, velocity, plastic strain, energies, time: 1e-12 "
                        "of their largest, or 10x the serial run's own response to one ulp",
                        text(d) + "; one ulp: " + text(round_off), within);
-  if (plastic) EXPECT_GT(largest(serial.batches()[0].plastic_strain), 0.1) << "the impact must yield the block";
-  if (comm.size() == 1) EXPECT_TRUE(d.same_bits) << "one rank steps the serial run's mesh in its order";
+  if (plastic) {
+    EXPECT_GT(largest(serial.batches()[0].plastic_strain), 0.1) << "the impact must yield the block";
+  }
+  if (comm.size() == 1) {
+    EXPECT_TRUE(d.same_bits) << "one rank steps the serial run's mesh in its order";
+  }
   EXPECT_LT(d.mass, 1e-14);  // one addition of shares
   EXPECT_LT(d.displacement, bound(round_off.displacement));
   EXPECT_LT(d.plastic_strain, bound(round_off.plastic_strain));
@@ -464,7 +468,9 @@ TEST(MpiFemRun, AFailureOnOneRankStopsEveryRankNamingTheElement) {
   std::vector<char> root = mine;
   comm.broadcast(root, 0);
   EXPECT_EQ(mine, root);
-  if (comm.size() > 1) EXPECT_NE(std::string(got->what()).find(" of " + std::to_string(comm.size())), std::string::npos);
+  if (comm.size() > 1) {
+    EXPECT_NE(std::string(got->what()).find(" of " + std::to_string(comm.size())), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ class RigidPoints : public Package<D> {
     return kinetic;
   }
   void update_state(const StepClock&, EnergyBalance&) override {}
-  typename Package<D>::Vote vote() const override { return {std::numeric_limits<double>::infinity(), "none"}; }
+  typename Package<D>::Vote vote() const override { return {std::numeric_limits<double>::infinity(), "none", EntityKind::model, 0, ""}; }
   double kinetic_energy() const override {
     double e = 0.0;
     for (std::size_t k = 0; k < m_.size(); ++k)

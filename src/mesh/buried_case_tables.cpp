@@ -24,10 +24,6 @@ void write_slide_interface(const BuriedStructureSpec& s, const std::vector<std::
   b += "# Soil-structure interface (structure.interface = \"slide\"): the box's parts are detached from the\n"
        "# soil along the faces they share, which may separate, recontact and slide with Coulomb friction\n"
        "# (Wang et al. 2005, section 4.13; coupling/slide_surface.hpp).\n";
-  if (s.three_d)
-    b += "# NOTE: in 3-D this is not yet usable for the buried box: coarse3d with it stopped at 51 ms,\n"
-         "# the front wall's concrete fully damaged from 30-40 ms along the box's edges where the soil\n"
-         "# wraps it, and an element there inverting (docs/buried-structure.md, \"Fused against sliding\").\n";
   b += "[[slide_surfaces]]\nparts = [";
   for (std::size_t k = 0; k < box_parts.size(); ++k)
     fmt::format_to(out, "{}\"{}\"", k == 0 ? "" : ", ", box_parts[k]);

@@ -538,7 +538,7 @@ TEST(SphAxisReference, SmoothedHoopBandProfileRecorded) {
 }
 
 // The longer problem (the quarter cylinder, 1 and 5 ms): its 3-D runs are stored, one row per
-// run, time and quantity, in tests/sph/data/axis_reference_3d.txt (a 3-D run to 5 ms takes tens of
+// run, time and quantity, in tests/sph/data/axis_reference_3d.txt (a 3-D run to 5 ms takes about 4
 // minutes on one core); the tests below run the r-z ensembles against their means. Write runs
 // (indices of the ensemble's CFL numbers, 0 to kLonger.runs - 1) with
 //   AXIS_REFERENCE_RUNS=0,1,2 AXIS_REFERENCE_OUT=part0.txt build/tests/test_sph_long
@@ -642,13 +642,13 @@ void record_longer_against_stored(const std::vector<Ensemble>& rz, const std::st
   }
 }
 
-// Disabled until tests/sph/data/axis_reference_3d.txt holds the ten 3-D runs (about 7 core-hours
-// on the 2-vCPU guest; docs/theory/sph.md, "A longer reference").
-TEST(SphAxisReference, DISABLED_LongerProblemPointHoopTermsAgainstStoredReference) {
+// Against the ten stored 3-D runs (docs/theory/sph.md, "A longer reference"): recorded, not
+// asserted, until the axis treatment meets the 5 % target.
+TEST(SphAxisReference, LongerProblemPointHoopTermsAgainstStoredReference) {
   record_longer_against_stored(ensemble<2>(kLonger), "the point hoop terms (the [sph] defaults)");
 }
 
-TEST(SphAxisReference, DISABLED_LongerProblemGeneratorAxisTermsAgainstStoredReference) {
+TEST(SphAxisReference, LongerProblemGeneratorAxisTermsAgainstStoredReference) {
   record_longer_against_stored(ensemble<2>(kLonger, {true, 0.5, true}),
                                "the band of h/2 and the viscosity's hoop term (the buried-structure generator's)");
 }

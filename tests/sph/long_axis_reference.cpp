@@ -648,6 +648,11 @@ TEST(SphAxisReference, LongerProblemPointHoopTermsAgainstStoredReference) {
   record_longer_against_stored(ensemble<2>(kLonger), "the point hoop terms (the [sph] defaults)");
 }
 
+TEST(SphAxisReference, LongerProblemSmoothedHoopTermAgainstStoredReference) {
+  // The smoothed hoop term alone: which part of the generator's axis terms moves what.
+  record_longer_against_stored(ensemble<2>(kLonger, {true, 0.0}), "the smoothed hoop term");
+}
+
 TEST(SphAxisReference, LongerProblemGeneratorAxisTermsAgainstStoredReference) {
   record_longer_against_stored(ensemble<2>(kLonger, {true, 0.5, true}),
                                "the band of h/2 and the viscosity's hoop term (the buried-structure generator's)");

@@ -61,6 +61,10 @@ void find_rim(const std::vector<std::int64_t>& faces,
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
 }
 
+Vec<3> cross(const Vec<3>& a, const Vec<3>& b) {
+  return Vec<3>{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
 }  // namespace
 
 template <int D>
@@ -203,7 +207,7 @@ bool SlideSurfaces<D>::closest_foot(const Side& faces, std::size_t k, int piece,
     const int* tri = triangles[piece];
     const Vec<3> a = point(q[tri[0]]), b = point(q[tri[1]]), c = point(q[tri[2]]);
     const Vec<3> ab = b - a, ac = c - a;
-    Vec<3> n{{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]}};
+    const Vec<3> n = cross(ab, ac);
     const double area2 = std::sqrt(dot(n, n));
     if (!(area2 > 0.0)) return false;
     foot.normal = n * (1.0 / area2);
@@ -354,8 +358,7 @@ void SlideSurfaces<D>::pass(const Surface& s, const Side& nodes, const Side& fac
             const Vec<3> o = point(on[static_cast<std::size_t>(c)]);
             const Vec<3> e1 = point(on[static_cast<std::size_t>((c + 1) % 3)]) - o,
                          e2 = point(on[static_cast<std::size_t>((c + 2) % 3)]) - o;
-            const Vec<3> n{{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                            e1[0] * e2[1] - e1[1] * e2[0]}};
+            const Vec<3> n = cross(e1, e2);
             weight = std::atan2(std::sqrt(dot(n, n)), dot(e1, e2));
           }
         }

@@ -401,17 +401,15 @@ struct TurnedCube {
   Vec<3> place(const Vec<3>& local) const {
     return origin + axis[0] * local[0] + axis[1] * local[1] + axis[2] * local[2];
   }
-  // The signed distance of p to the cube's surface (negative inside) and, inside, the way out
-  // (a nearest face's outward normal).
-  double signed_distance(const Vec<3>& p, Vec<3>& out) const {
+  // The signed distance of p to the cube's surface (negative inside).
+  double signed_distance(const Vec<3>& p) const {
     Vec<3> q;
     for (int i = 0; i < 3; ++i) q[i] = dot(p - origin, axis[static_cast<std::size_t>(i)]);
     Vec<3> outside{};
     double inner = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {
       outside[i] = std::max({-q[i], q[i] - h, 0.0});
-      if (q[i] < inner) inner = q[i], out = axis[static_cast<std::size_t>(i)] * -1.0;
-      if (h - q[i] < inner) inner = h - q[i], out = axis[static_cast<std::size_t>(i)];
+      inner = std::min({inner, q[i], h - q[i]});
     }
     const double d = std::sqrt(dot(outside, outside));
     return d > 0.0 ? d : -inner;
@@ -453,8 +451,7 @@ TEST(SlideSurface, ANodeBesideAnEdgeOrCornerIsJudgedByItsSignedDistance) {
       const Vec<3> at = i < across_edge ? Vec<3>{{0.0, 0.5 * cube.h, 0.0}} : Vec<3>{};
       const Vec<3> local = at + directions[i] * r;
       const Vec<3> p = cube.place(local);
-      Vec<3> out{};
-      const double distance = cube.signed_distance(p, out);
+      const double distance = cube.signed_distance(p);
       if (std::abs(distance) < 1e-10) continue;  // on the surface to rounding
       std::vector<double> x = cube.x;
       x.insert(x.end(), {p[0], p[1], p[2]});
@@ -466,10 +463,8 @@ TEST(SlideSurface, ANodeBesideAnEdgeOrCornerIsJudgedByItsSignedDistance) {
       } else {  // m_eff between 1/2 and 3/4 kg with the foot's weights; moved by its depth along
                 // the force, the node lands on the surface
         const double push = std::sqrt(dot(f, f));
-        Vec<3> landed_out{};
-        right =
-            push >= 0.5 * k * -distance * (1.0 - 1e-6) && push <= 0.75 * k * -distance * (1.0 + 1e-6) &&
-            std::abs(cube.signed_distance(p + f * (-distance / push), landed_out)) < 1e-6 * -distance + 1e-13;
+        right = push >= 0.5 * k * -distance * (1.0 - 1e-6) && push <= 0.75 * k * -distance * (1.0 + 1e-6) &&
+                std::abs(cube.signed_distance(p + f * (-distance / push))) < 1e-6 * -distance + 1e-13;
       }
       if (!right) {
         ++misjudged;

@@ -41,6 +41,7 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
   constexpr std::size_t block = 256;
   const std::size_t n_blocks = (n + block - 1) / block;
   std::vector<std::vector<std::uint32_t>> found(n_blocks);
+  std::vector<std::size_t> lower_count(n);
 #pragma omp parallel for schedule(dynamic, 4)
   for (std::size_t b = 0; b < n_blocks; ++b) {
     std::vector<std::uint32_t>& buffer = found[b];
@@ -48,10 +49,25 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
     std::size_t candidates = 0;
     for (std::size_t i = b * block; i < end; ++i) candidates += search.neighbours(i).size();
     buffer.reserve(candidates);
+    // A row in three parts, each in the cell lists' order: j < i, then the particles j > i,
+    // then the points without sums of their own (j >= n: ghosts, coupling points).
+    std::vector<std::uint32_t> upper_particles, other_points;
     for (std::size_t i = b * block; i < end; ++i) {
       const std::size_t start = buffer.size();
-      for (const std::uint32_t j : search.neighbours(i))
-        if (inside(i, j)) buffer.push_back(j);
+      upper_particles.clear();
+      other_points.clear();
+      for (const std::uint32_t j : search.neighbours(i)) {
+        if (!inside(i, j)) continue;
+        if (j < i)
+          buffer.push_back(j);
+        else if (j < n)
+          upper_particles.push_back(j);
+        else
+          other_points.push_back(j);
+      }
+      lower_count[i] = buffer.size() - start;
+      buffer.insert(buffer.end(), upper_particles.begin(), upper_particles.end());
+      buffer.insert(buffer.end(), other_points.begin(), other_points.end());
       offset_[i + 1] = buffer.size() - start;
     }
   }
@@ -63,12 +79,7 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
     std::copy(found[b].begin(), found[b].end(),
               list_.begin() + static_cast<std::ptrdiff_t>(offset_[b * block]));
     const std::size_t end = std::min(n, (b + 1) * block);
-    for (std::size_t i = b * block; i < end; ++i) {
-      const auto first = list_.begin() + static_cast<std::ptrdiff_t>(offset_[i]);
-      const auto last = list_.begin() + static_cast<std::ptrdiff_t>(offset_[i + 1]);
-      upper_[i] = static_cast<std::size_t>(
-          std::upper_bound(first, last, static_cast<std::uint32_t>(i)) - list_.begin());
-    }
+    for (std::size_t i = b * block; i < end; ++i) upper_[i] = offset_[i] + lower_count[i];
   }
   upper_index_.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i)

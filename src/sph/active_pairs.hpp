@@ -1,13 +1,11 @@
 #pragma once
 // The second-level pair list of the SPH sums (a Verlet list of the Verlet
 // list): the entries of the cell-search lists with |x_i - x_j| < 2 h_ij +
-// skin when extracted, in list order. The pair sums run over it: the cell
-// lists carry a skin of ~0.3 h (rebuilt every ~10 steps), i.e. about twice
-// the pairs inside the support, while this one is re-extracted (a cheap scan)
-// only when 2 max|x - x_extracted| + 2 max(h - h_extracted) exceeds its thin
-// skin. Any list that holds every pair inside the support gives the same
-// sums, bit for bit: only the skipped pairs differ, so the list is not part
-// of a checkpoint.
+// skin when extracted, in list order within the parts of a row (upper_neighbours). The pair sums run over it:
+// the cell lists carry a skin of ~0.3 h (rebuilt every ~10 steps), i.e. about twice the pairs inside the
+// support, while this one is re-extracted (a cheap scan) only when 2 max|x - x_extracted| + 2 max(h -
+// h_extracted) exceeds its thin skin. Any list that holds every pair inside the support gives the same sums,
+// bit for bit: only the skipped pairs differ, so the list is not part of a checkpoint.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -33,7 +31,8 @@ class ActivePairs {
   void forget() { builds_ = -1; }
 
   // The part of row i with j > i: every pair of particles once, and all of i's pairs with
-  // points that have no sums of their own (ghosts, coupling points).
+  // points that have no sums of their own (ghosts, coupling points), these last (j >= n).
+  // Within each part the order of the cell lists (neighbour_search.hpp), not sorted by j.
   std::span<const std::uint32_t> upper_neighbours(std::size_t i) const {
     return {list_.data() + upper_[i], offset_[i + 1] - upper_[i]};
   }

@@ -10,10 +10,14 @@
 // asks needs_rebuild() each cycle; rebuilding is O(N): particles are sorted by
 // cell with a counting sort and only the 3^D surrounding cells are searched.
 //
-// Lists are full (both i->j and j->i) and sorted by j. The pair sums of
-// SphSystem run over a thin-skin sub-list of them, each particle pair once
-// (the j > i part), scattering into per-thread sums (sph_forces.cpp). Only the
-// first n_owned points get lists; points after them (ghosts) are candidates only.
+// Lists are full (both i->j and j->i) and in the order of the build's visit:
+// the 3^D cells around i in ascending cell index, each cell's points in
+// ascending index. That order is fixed by the positions at the build alone
+// (any thread count gives the same lists); it is not sorted by j. The pair
+// sums of SphSystem run over a thin-skin sub-list of them, each particle pair
+// once (the j > i part), scattering into per-thread sums (sph_forces.cpp).
+// Only the first n_owned points get lists; points after them (ghosts) are
+// candidates only.
 #include <cstdint>
 #include <span>
 #include <vector>

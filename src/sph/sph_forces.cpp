@@ -113,13 +113,13 @@ void SphSystem<D>::prepare_row_blocks() {
     return;
   const std::size_t n = p_.real;
   constexpr std::size_t row_cost = 4;  // pair entries
-  // One past the largest particle among row i's j > i entries (ghosts and coupling points, j >= n,
-  // sort after the particles in the list and have no sums).
+  // One past the largest particle among row i's j > i entries (the lists are in cell order, not
+  // sorted; ghosts and coupling points, j >= n, have no sums).
   auto reach = [&](std::size_t i) {
-    const auto list = active_upper_neighbours(i);
-    std::size_t e = list.size();
-    while (e > 0 && list[e - 1] >= n) --e;
-    return e > 0 ? std::max<std::size_t>(i + 1, list[e - 1] + 1) : i + 1;
+    std::size_t end = i + 1;
+    for (const std::uint32_t j : active_upper_neighbours(i))
+      if (j < n) end = std::max<std::size_t>(end, j + 1);
+    return end;
   };
   row_blocks_.build(blocks, n, active_.upper_index().data(), row_cost, reach);
   row_blocks_extraction_ = active_.extractions();

@@ -282,7 +282,10 @@ bool SphSystem<D>::end_step_of_row(std::size_t i, const KinematicSum& total, dou
   double hi = h[i];
   if (options_.variable_smoothing_length) {
     const double h0 = p_.reference_smoothing_length[i];
-    hi = h0 * std::pow(p_.reference_planar_density[i] / eta_new, 1.0 / D);
+    // The D-th root by sqrt and cbrt rather than pow(x, 1.0 / D): the root itself, not the power
+    // of a rounded third, at a fraction of the cost (libm's pow took 1.6 % of the Taylor bar).
+    const double ratio = p_.reference_planar_density[i] / eta_new;
+    hi = h0 * (D == 3 ? std::cbrt(ratio) : D == 2 ? std::sqrt(ratio) : ratio);
     hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);
   }
   // Row i's own entries only (the other rows' sums do not read them): end of the step.

@@ -19,31 +19,39 @@ void artificial_stress_3d(std::span<const SymTensor> sigma, std::span<const doub
     for (std::size_t k = 0; k < sigma.size(); ++k) out[k] = artificial_stress<3>(sigma[k], epsilon, scale[k]);
     return;
   }
-  for (std::size_t g = 0; g < sigma.size(); g += pair_lanes) {
-    const std::size_t width = std::min<std::size_t>(pair_lanes, sigma.size() - g);
+  // The tensors with tension are packed into full lanes in order (about half of an impact's
+  // particles have some): lanes by position left most of each solve idle. Each lane still does
+  // the scalar solve's operations, so the packing changes no bits.
+  std::size_t pending[pair_lanes];
+  int filled = 0;
+  const auto solve = [&] {
     LaneMask need{};
     Lanes s[6] = {};
-    for (std::size_t l = 0; l < width; ++l) {
-      const SymTensor& t = sigma[g + l];
-      out[g + l] = {};
-      if (no_tension(t)) continue;
+    for (int l = 0; l < filled; ++l) {
+      const SymTensor& t = sigma[pending[l]];
       need[l] = -1;
       const double components[6] = {t.xx, t.yy, t.zz, t.xy, t.yz, t.zx};
       for (int c = 0; c < 6; ++c) s[c][l] = components[c];
     }
-    if (!any_of(need)) continue;
     Lanes values[3], vectors[3][3];
     symmetric_eigen_of(s, need, values, vectors);
-    for (std::size_t l = 0; l < width; ++l) {
-      if (!need[l]) continue;
+    for (int l = 0; l < filled; ++l) {
       double v[3], q[3][3];
       for (int i = 0; i < 3; ++i) {
         v[i] = values[i][l];
         for (int j = 0; j < 3; ++j) q[i][j] = vectors[i][j][l];
       }
-      out[g + l] = rotate_tensile_part(v, q, epsilon, scale[g + l]);
+      out[pending[l]] = rotate_tensile_part(v, q, epsilon, scale[pending[l]]);
     }
+    filled = 0;
+  };
+  for (std::size_t k = 0; k < sigma.size(); ++k) {
+    out[k] = {};
+    if (no_tension(sigma[k])) continue;
+    pending[filled++] = k;
+    if (filled == pair_lanes) solve();
   }
+  if (filled > 0) solve();
 }
 
 }  // namespace camouflet::sph

@@ -155,7 +155,7 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
   // a buffer of its own, and the buffers are then copied into place (a count
   // pass and a fill pass visited every candidate twice). A row keeps the order
   // of the visit: sorting it by j took half of the build (~600 ns a particle,
-  // 3-D, ~75 candidates; docs/performance.md, "Lists in cell order").
+  // 3-D, ~75 candidates; docs/performance.md, "SPH lists in cell order").
   constexpr std::size_t block = 256;
   const std::size_t n_blocks = (n_owned + block - 1) / block;
   std::vector<std::vector<std::uint32_t>> found(n_blocks);

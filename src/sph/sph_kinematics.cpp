@@ -283,7 +283,7 @@ bool SphSystem<D>::end_step_of_row(std::size_t i, const KinematicSum& total, dou
   if (options_.variable_smoothing_length) {
     const double h0 = p_.reference_smoothing_length[i];
     // The D-th root by sqrt and cbrt rather than pow(x, 1.0 / D): the root itself, not the power
-    // of a rounded third, at a fraction of the cost (libm's pow took 1.6 % of the Taylor bar).
+    // of a rounded third (no faster: glibc's cbrt costs what pow did, docs/performance.md).
     const double ratio = p_.reference_planar_density[i] / eta_new;
     hi = h0 * (D == 3 ? std::cbrt(ratio) : D == 2 ? std::sqrt(ratio) : ratio);
     hi = std::clamp(hi, options_.h_min_factor * h0, options_.h_max_factor * h0);

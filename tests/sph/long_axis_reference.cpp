@@ -661,3 +661,10 @@ TEST(SphAxisReference, LongerProblemGeneratorAxisTermsAgainstStoredReference) {
   record_longer_against_stored(ensemble<2>(kLonger, {true, 0.5, true}),
                                "the band of h/2 and the viscosity's hoop term (the buried-structure generator's)");
 }
+
+TEST(SphAxisReference, LongerProblemSmoothedAndViscousHoopTermsAgainstStoredReference) {
+  // The generator's terms without the band: does the viscosity's hoop term alone take the near-axis
+  // columns' radial throw back where the band puts it 1.3-2.2x too far?
+  record_longer_against_stored(ensemble<2>(kLonger, {true, 0.0, true}),
+                               "the smoothed hoop term and the viscosity's hoop term (no band)");
+}

@@ -41,7 +41,7 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
   constexpr std::size_t block = 256;
   const std::size_t n_blocks = (n + block - 1) / block;
   std::vector<std::vector<std::uint32_t>> found(n_blocks);
-  std::vector<std::size_t> lower_count(n);
+  upper_.resize(n);  // first the count of row i's entries j < i, then (below) where its j > i part starts
 #pragma omp parallel for schedule(dynamic, 4)
   for (std::size_t b = 0; b < n_blocks; ++b) {
     std::vector<std::uint32_t>& buffer = found[b];
@@ -65,7 +65,7 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
         else
           other_points.push_back(j);
       }
-      lower_count[i] = buffer.size() - start;
+      upper_[i] = buffer.size() - start;
       buffer.insert(buffer.end(), upper_particles.begin(), upper_particles.end());
       buffer.insert(buffer.end(), other_points.begin(), other_points.end());
       offset_[i + 1] = buffer.size() - start;
@@ -73,13 +73,12 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
   }
   for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
   list_.resize(offset_[n]);
-  upper_.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < n_blocks; ++b) {
     std::copy(found[b].begin(), found[b].end(),
               list_.begin() + static_cast<std::ptrdiff_t>(offset_[b * block]));
     const std::size_t end = std::min(n, (b + 1) * block);
-    for (std::size_t i = b * block; i < end; ++i) upper_[i] = offset_[i] + lower_count[i];
+    for (std::size_t i = b * block; i < end; ++i) upper_[i] += offset_[i];
   }
   upper_index_.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i)

@@ -13,6 +13,14 @@ using namespace camouflet::sph;
 
 namespace {
 
+// Row i of the lists as a sorted set (the lists keep the cells' order, neighbour_search.hpp).
+template <int D>
+std::vector<std::uint32_t> sorted_row(const NeighbourSearch<D>& search, std::size_t i) {
+  std::vector<std::uint32_t> row(search.neighbours(i).begin(), search.neighbours(i).end());
+  std::sort(row.begin(), row.end());
+  return row;
+}
+
 template <int D>
 std::size_t count_mismatches(const std::vector<Vec<D>>& x, const std::vector<double>& h, std::size_t n_owned,
                              double skin) {
@@ -21,10 +29,7 @@ std::size_t count_mismatches(const std::vector<Vec<D>>& x, const std::vector<dou
   const auto reference = brute_force_neighbours<D>(x, h, n_owned, skin);
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < n_owned; ++i) {
-    // The lists keep the cells' order (neighbour_search.hpp): compared as sets.
-    std::vector<std::uint32_t> got(search.neighbours(i).begin(), search.neighbours(i).end());
-    std::sort(got.begin(), got.end());
-    if (got != reference[i]) ++mismatches;
+    if (sorted_row(search, i) != reference[i]) ++mismatches;
   }
   EXPECT_GT(search.pair_count(), n_owned * 4);  // the sets are not trivially empty
   return mismatches;
@@ -106,8 +111,7 @@ TEST(SphNeighbourSearch, SkinKeepsListsValidUntilRebuild) {
   const auto inside = brute_force_neighbours<3>(x, h, x.size(), 0.0);
   std::size_t missing = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    std::vector<std::uint32_t> got(search.neighbours(i).begin(), search.neighbours(i).end());
-    std::sort(got.begin(), got.end());
+    const std::vector<std::uint32_t> got = sorted_row(search, i);
     for (auto j : inside[i])
       if (!std::binary_search(got.begin(), got.end(), j)) ++missing;
   }

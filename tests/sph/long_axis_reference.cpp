@@ -308,6 +308,19 @@ std::vector<ColumnMotion> run_column_motion(const Problem& problem, double cfl, 
     test::advance_leapfrog(sph, clock, until, cfl, track_peaks);
     ColumnMotion m;
     sample(sph, gauges, m);
+    if (const char* dump = std::getenv("AXIS_DUMP")) {
+      // For plots of a sweep: every particle of the sampled state, one line each: part, position,
+      // initial position (m), density (kg/m^3), smoothing length (m).
+      std::ofstream f(fmt::format("{}_{}d_{:.0f}ms_{:.5f}.txt", dump, D, 1e3 * until, cfl));
+      const auto& p = sph.particles();
+      for (std::size_t i = 0; i < sph.size(); ++i) {
+        const Vec<D> x0 = p.position[i] - p.displacement[i];
+        f << p.part[i];
+        for (int a = 0; a < D; ++a) f << ' ' << p.position[i][a];
+        for (int a = 0; a < D; ++a) f << ' ' << x0[a];
+        f << ' ' << p.density[i] << ' ' << p.smoothing_length[i] << '\n';
+      }
+    }
     for (int g = 0; g < 3; ++g) m.gauge_peak_v[g] = peak[g];
     m.energy_error = (test::synchronised_kinetic_energy(sph, clock.dt_previous) + sph.internal_energy()) / e0 - 1.0;
     std::printf(
@@ -667,4 +680,19 @@ TEST(SphAxisReference, LongerProblemSmoothedAndViscousHoopTermsAgainstStoredRefe
   // columns' radial throw back where the band puts it 1.3-2.2x too far?
   record_longer_against_stored(ensemble<2>(kLonger, {true, 0.0, true}),
                                "the smoothed hoop term and the viscosity's hoop term (no band)");
+}
+
+// A sweep's instrument, not a test: the longer problem in r-z with the axis terms of
+// AXIS_HOOP="smoothed width viscous" (e.g. "1 0.25 0"), against the stored 3-D runs; about a minute
+// on one core. Run with --gtest_also_run_disabled_tests --gtest_filter=*LongerProblemFromEnvironment;
+// AXIS_DUMP=prefix also writes each run's particles at each sampled time.
+TEST(SphAxisReference, DISABLED_LongerProblemFromEnvironment) {
+  const char* spec = std::getenv("AXIS_HOOP");
+  ASSERT_NE(spec, nullptr) << "set AXIS_HOOP=\"smoothed width viscous\"";
+  std::istringstream in(spec);
+  int smoothed = 0, viscous = 0;
+  double width = 0.0;
+  ASSERT_TRUE(in >> smoothed >> width >> viscous) << "AXIS_HOOP: three numbers, got \"" << spec << "\"";
+  record_longer_against_stored(ensemble<2>(kLonger, {smoothed != 0, width, viscous != 0}),
+                               fmt::format("AXIS_HOOP {}", spec));
 }

@@ -150,11 +150,14 @@ std::pair<double, double> fit2(const std::vector<double>& f, const std::vector<d
   return {(fy * gg - gy * fg) / det, (gy * ff - fy * fg) / det};
 }
 
-// The r-z hoop term of a run: the point term, or [sph] smoothed_hoop with its band next to the axis.
+// The r-z hoop term of a run: the point term, or [sph] smoothed_hoop with its band next to the axis;
+// and the two settings the disabled instruments below may change (the tests keep these).
 struct HoopTerm {
   bool smoothed = false;
   double width = 0.0;  // [sph] smoothed_hoop_width, smoothing lengths
   bool viscous = false;  // [sph] viscosity_hoop
+  double viscosity_alpha = 0.2;  // as the generated buried cases
+  bool artificial_stress = true;
 };
 
 // The soil's gauge rings: for each gauge the particles that start within 1.5 spacings of its ring.
@@ -287,10 +290,11 @@ std::vector<ColumnMotion> run_column_motion(const Problem& problem, double cfl, 
                                             int threads = 1) {
   const Model model = buried_charge_model<D>(problem);
   SphOptions options;
-  options.viscosity_alpha = 0.2;  // as the generated buried cases
+  options.viscosity_alpha = hoop.viscosity_alpha;
   options.smoothed_hoop = hoop.smoothed;
   options.smoothed_hoop_width = hoop.width;
   options.viscosity_hoop = hoop.viscous;
+  options.artificial_stress = hoop.artificial_stress;
   std::vector<MirrorPlane> planes = axis_mirror_planes(model.run.mode);  // r-z: the axis
   if constexpr (D == 3) planes = {{0, 0.0, PlaneKind::symmetry}, {1, 0.0, PlaneKind::symmetry}};
   SphSystem<D> sph(model, options, planes);
@@ -311,7 +315,7 @@ std::vector<ColumnMotion> run_column_motion(const Problem& problem, double cfl, 
     if (const char* dump = std::getenv("AXIS_DUMP")) {
       // For plots of a sweep: every particle of the sampled state, one line each: part, position,
       // initial position (m), density (kg/m^3), smoothing length (m).
-      std::ofstream f(fmt::format("{}_{}d_{:.0f}ms_{:.5f}.txt", dump, D, 1e3 * until, cfl));
+      std::ofstream f(fmt::format("{}_{}d_{:.0f}us_{:.5f}.txt", dump, D, 1e6 * until, cfl));
       const auto& p = sph.particles();
       for (std::size_t i = 0; i < sph.size(); ++i) {
         const Vec<D> x0 = p.position[i] - p.displacement[i];
@@ -567,6 +571,14 @@ double longer_cfl(int run) {
   return 0.4998 + 4e-4 * run / (kLonger.runs - 1);
 }
 
+// The settings of the disabled instruments' runs besides the hoop terms, from the environment:
+// AXIS_ALPHA (the viscosity's alpha, else 0.2) and AXIS_NO_ARTIFICIAL_STRESS (set: off).
+HoopTerm instrument_settings(HoopTerm hoop) {
+  if (const char* alpha = std::getenv("AXIS_ALPHA")) hoop.viscosity_alpha = std::atof(alpha);
+  if (std::getenv("AXIS_NO_ARTIFICIAL_STRESS")) hoop.artificial_stress = false;
+  return hoop;
+}
+
 TEST(SphAxisReference, DISABLED_WriteLongerThreeDimensionalReference) {
   std::vector<int> runs;
   const char* list = std::getenv("AXIS_REFERENCE_RUNS");
@@ -578,8 +590,8 @@ TEST(SphAxisReference, DISABLED_WriteLongerThreeDimensionalReference) {
   const char* path = std::getenv("AXIS_REFERENCE_OUT");
   std::ofstream out(path ? std::filesystem::path(path) : kStoredReference, std::ios::app);
   for (const int run : runs) {
-    std::vector<ColumnMotion> motion =
-        run_column_motion<3>(kLonger, longer_cfl(run), {}, threads ? std::atoi(threads) : 1);
+    std::vector<ColumnMotion> motion = run_column_motion<3>(kLonger, longer_cfl(run), instrument_settings({}),
+                                                            threads ? std::atoi(threads) : 1);
     for (std::size_t t = 0; t < motion.size(); ++t) {
       for (auto& [name, value] : named_fields(motion[t]))
         out << fmt::format("{} {:g} {} {:.9g}\n", run, 1e3 * kLonger.times[t], name, *value);
@@ -592,7 +604,8 @@ TEST(SphAxisReference, DISABLED_WriteLongerThreeDimensionalReference) {
 // The stored 3-D runs as ensembles, by time (ms): means, standard errors, run count, worst energy
 // error.
 std::map<double, Ensemble> read_stored_reference() {
-  std::ifstream in(kStoredReference);
+  const char* other = std::getenv("AXIS_REFERENCE_IN");  // the instruments': another stored 3-D set
+  std::ifstream in(other ? std::filesystem::path(other) : kStoredReference);
   std::map<double, std::map<int, std::map<std::string, double>>> rows;  // time, run, quantity
   std::string line;
   while (std::getline(in, line)) {
@@ -683,9 +696,13 @@ TEST(SphAxisReference, LongerProblemSmoothedAndViscousHoopTermsAgainstStoredRefe
 }
 
 // A sweep's instrument, not a test: the longer problem in r-z with the axis terms of
-// AXIS_HOOP="smoothed width viscous" (e.g. "1 0.25 0"), against the stored 3-D runs; about a minute
-// on one core. Run with --gtest_also_run_disabled_tests --gtest_filter=*LongerProblemFromEnvironment;
-// AXIS_DUMP=prefix also writes each run's particles at each sampled time.
+// AXIS_HOOP="smoothed width viscous" (e.g. "1 0.25 0"), against the stored 3-D runs (or those of
+// the file AXIS_REFERENCE_IN, written with the same AXIS_ALPHA by the writer above); about a
+// minute on one core. Run with --gtest_also_run_disabled_tests
+// --gtest_filter=*LongerProblemFromEnvironment. Besides instrument_settings()'s keys:
+// AXIS_DUMP=prefix writes each run's particles at each sampled time; AXIS_TIMES="0.1 0.2 ..."
+// (ms) samples those times instead and compares nothing (for dumps), with AXIS_RUNS runs (at
+// least 2) and, with AXIS_3D set, in 3-D.
 TEST(SphAxisReference, DISABLED_LongerProblemFromEnvironment) {
   const char* spec = std::getenv("AXIS_HOOP");
   ASSERT_NE(spec, nullptr) << "set AXIS_HOOP=\"smoothed width viscous\"";
@@ -693,6 +710,22 @@ TEST(SphAxisReference, DISABLED_LongerProblemFromEnvironment) {
   int smoothed = 0, viscous = 0;
   double width = 0.0;
   ASSERT_TRUE(in >> smoothed >> width >> viscous) << "AXIS_HOOP: three numbers, got \"" << spec << "\"";
-  record_longer_against_stored(ensemble<2>(kLonger, {smoothed != 0, width, viscous != 0}),
-                               fmt::format("AXIS_HOOP {}", spec));
+  const HoopTerm hoop = instrument_settings({smoothed != 0, width, viscous != 0});
+  Problem problem = kLonger;
+  if (const char* times = std::getenv("AXIS_TIMES")) {
+    problem.times.clear();
+    std::istringstream t(times);
+    for (double ms; t >> ms;) problem.times.push_back(1e-3 * ms);
+    const char* runs = std::getenv("AXIS_RUNS");
+    problem.runs = runs ? std::atoi(runs) : 2;
+    ASSERT_GE(problem.runs, 2) << "AXIS_RUNS: at least 2 (the CFL numbers span 0.5 +- 2e-4)";
+    if (std::getenv("AXIS_3D"))
+      ensemble<3>(problem, hoop);
+    else
+      ensemble<2>(problem, hoop);
+    return;
+  }
+  record_longer_against_stored(ensemble<2>(problem, hoop),
+                               fmt::format("AXIS_HOOP {}, alpha {:g}{}", spec, hoop.viscosity_alpha,
+                                           hoop.artificial_stress ? "" : ", no artificial stress"));
 }

@@ -4,8 +4,10 @@
 // skin when extracted, in list order within the parts of a row (upper_neighbours). The pair sums run over it:
 // the cell lists carry a skin of ~0.3 h (rebuilt every ~10 steps), i.e. about twice the pairs inside the
 // support, while this one is re-extracted (a cheap scan) only when 2 max|x - x_extracted| + 2 max(h -
-// h_extracted) exceeds its thin skin. Any list that holds every pair inside the support gives the same sums,
-// bit for bit: only the skipped pairs differ, so the list is not part of a checkpoint.
+// h_extracted) exceeds its thin skin. Any list that holds every pair inside the support gives the same sums
+// to round-off, so the list is not part of a checkpoint: the scalar rows skip a pair outside the support
+// (bit for bit), but the SIMD rows give it a masked lane, so another list can move a row's later pairs to
+// other lanes and change the order of the additions (pair_lanes.hpp).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -92,7 +92,7 @@ void SphSystem<D>::visit_state(StateVisitor& v) {
   visit(v, "ghost_reach", ghost_reach_);
   visit(v, "velocity_old", velocity_old_);
   // The pair terms of the last force pass are not stored: kick() recomputes them.
-  // Nor is the active pair list (sph_system.hpp): any complete list gives the same sums.
+  // Nor is the active pair list (active_pairs.hpp): any complete list gives the same sums to round-off.
   if (v.loading()) pair_dissipation_current_ = false, active_.forget();
   for (std::size_t m = 0; m < batches_.size(); ++m) {
     StateScope batch(v, "batch" + std::to_string(m));

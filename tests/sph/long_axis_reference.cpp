@@ -158,6 +158,7 @@ struct HoopTerm {
   bool viscous = false;  // [sph] viscosity_hoop
   double viscosity_alpha = 0.2;  // as the generated buried cases
   bool artificial_stress = true;
+  std::string dump{};  // not empty: each sampled state's particles go to files named from this prefix
 };
 
 // The soil's gauge rings: for each gauge the particles that start within 1.5 spacings of its ring.
@@ -312,10 +313,10 @@ std::vector<ColumnMotion> run_column_motion(const Problem& problem, double cfl, 
     test::advance_leapfrog(sph, clock, until, cfl, track_peaks);
     ColumnMotion m;
     sample(sph, gauges, m);
-    if (const char* dump = std::getenv("AXIS_DUMP")) {
+    if (!hoop.dump.empty()) {
       // For plots of a sweep: every particle of the sampled state, one line each: part, position,
       // initial position (m), density (kg/m^3), smoothing length (m).
-      std::ofstream f(fmt::format("{}_{}d_{:.0f}us_{:.5f}.txt", dump, D, 1e6 * until, cfl));
+      std::ofstream f(fmt::format("{}_{}d_{:.0f}us_{:.5f}.txt", hoop.dump, D, 1e6 * until, cfl));
       const auto& p = sph.particles();
       for (std::size_t i = 0; i < sph.size(); ++i) {
         const Vec<D> x0 = p.position[i] - p.displacement[i];
@@ -572,10 +573,12 @@ double longer_cfl(int run) {
 }
 
 // The settings of the disabled instruments' runs besides the hoop terms, from the environment:
-// AXIS_ALPHA (the viscosity's alpha, else 0.2) and AXIS_NO_ARTIFICIAL_STRESS (set: off).
+// AXIS_ALPHA (the viscosity's alpha, else 0.2), AXIS_NO_ARTIFICIAL_STRESS (set: off) and
+// AXIS_DUMP=prefix (each run's particles at each sampled time to files named from it).
 HoopTerm instrument_settings(HoopTerm hoop) {
   if (const char* alpha = std::getenv("AXIS_ALPHA")) hoop.viscosity_alpha = std::atof(alpha);
   if (std::getenv("AXIS_NO_ARTIFICIAL_STRESS")) hoop.artificial_stress = false;
+  if (const char* dump = std::getenv("AXIS_DUMP")) hoop.dump = dump;
   return hoop;
 }
 
@@ -603,9 +606,8 @@ TEST(SphAxisReference, DISABLED_WriteLongerThreeDimensionalReference) {
 
 // The stored 3-D runs as ensembles, by time (ms): means, standard errors, run count, worst energy
 // error.
-std::map<double, Ensemble> read_stored_reference() {
-  const char* other = std::getenv("AXIS_REFERENCE_IN");  // the instruments': another stored 3-D set
-  std::ifstream in(other ? std::filesystem::path(other) : kStoredReference);
+std::map<double, Ensemble> read_stored_reference(const std::filesystem::path& path) {
+  std::ifstream in(path);
   std::map<double, std::map<int, std::map<std::string, double>>> rows;  // time, run, quantity
   std::string line;
   while (std::getline(in, line)) {
@@ -635,9 +637,10 @@ std::map<double, Ensemble> read_stored_reference() {
 // An r-z ensemble of the longer problem against the stored 3-D one, recorded quantity by quantity
 // as "r-z / 3-D = ratio (standard errors of the two means, relative)", inside when the ratio is
 // within 5 % of 1 (the target of the axis work) and both standard errors below 2 %.
-void record_longer_against_stored(const std::vector<Ensemble>& rz, const std::string& variant) {
-  const std::map<double, Ensemble> stored = read_stored_reference();
-  ASSERT_FALSE(stored.empty()) << "no stored 3-D runs in " << kStoredReference;
+void record_longer_against_stored(const std::vector<Ensemble>& rz, const std::string& variant,
+                                  const std::filesystem::path& reference = kStoredReference) {
+  const std::map<double, Ensemble> stored = read_stored_reference(reference);
+  ASSERT_FALSE(stored.empty()) << "no stored 3-D runs in " << reference;
   for (std::size_t t = 0; t < kLonger.times.size(); ++t) {
     const double time_ms = 1e3 * kLonger.times[t];
     ASSERT_TRUE(stored.count(time_ms)) << "the stored reference has no rows at " << time_ms << " ms";
@@ -700,9 +703,8 @@ TEST(SphAxisReference, LongerProblemSmoothedAndViscousHoopTermsAgainstStoredRefe
 // the file AXIS_REFERENCE_IN, written with the same AXIS_ALPHA by the writer above); about a
 // minute on one core. Run with --gtest_also_run_disabled_tests
 // --gtest_filter=*LongerProblemFromEnvironment. Besides instrument_settings()'s keys:
-// AXIS_DUMP=prefix writes each run's particles at each sampled time; AXIS_TIMES="0.1 0.2 ..."
-// (ms) samples those times instead and compares nothing (for dumps), with AXIS_RUNS runs (at
-// least 2) and, with AXIS_3D set, in 3-D.
+// AXIS_TIMES="0.1 0.2 ..." (ms) samples those times instead and compares nothing (for dumps),
+// with AXIS_RUNS runs (at least 2) and, with AXIS_3D set, in 3-D.
 TEST(SphAxisReference, DISABLED_LongerProblemFromEnvironment) {
   const char* spec = std::getenv("AXIS_HOOP");
   ASSERT_NE(spec, nullptr) << "set AXIS_HOOP=\"smoothed width viscous\"";
@@ -725,7 +727,9 @@ TEST(SphAxisReference, DISABLED_LongerProblemFromEnvironment) {
       ensemble<2>(problem, hoop);
     return;
   }
+  const char* reference = std::getenv("AXIS_REFERENCE_IN");
   record_longer_against_stored(ensemble<2>(problem, hoop),
                                fmt::format("AXIS_HOOP {}, alpha {:g}{}", spec, hoop.viscosity_alpha,
-                                           hoop.artificial_stress ? "" : ", no artificial stress"));
+                                           hoop.artificial_stress ? "" : ", no artificial stress"),
+                               reference ? std::filesystem::path(reference) : kStoredReference);
 }

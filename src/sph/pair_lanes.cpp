@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <span>
 
 #include "sph/pair_terms.hpp"
@@ -58,6 +59,66 @@ struct PairGroup {
   }
 };
 
+#if defined(__AVX512F__)
+// The j sides of a group of pair-once rows in 3-D, added to the partners' sums (j < n) as the
+// scalar loops of the rows do, lane by lane: each lane's values are gathered into one register
+// by an 8 x 8 transpose rather than inserted value by value, and added with whole-register
+// loads and stores. x - y is computed as x + (-y), which IEEE arithmetic rounds alike: the
+// sums keep their bits.
+template <class Sum>
+inline void scatter_kinematic_sums(const Lanes& rate_j, const Lanes weighted_dv_j[3], const Lanes grad[3],
+                                   const std::uint32_t* j, std::size_t width, std::size_t n, Sum* own) {
+  static_assert(offsetof(Sum, L) == sizeof(double) && sizeof(Sum::L) == 9 * sizeof(double),
+                "rate and L[3][3] are ten contiguous doubles");
+  Lanes minus_L[9];  // -(weight_j v_ij)_a grad_b, row by row
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) minus_L[3 * a + b] = -(weighted_dv_j[a] * grad[b]);
+  __m512d columns[8], rows[8];
+  columns[0] = reinterpret_cast<__m512d>(rate_j);
+  for (int c = 1; c < 8; ++c) columns[c] = reinterpret_cast<__m512d>(minus_L[c - 1]);
+  transpose_8x8(columns, rows);
+  // The last two (L_zy, L_zz) lane by lane in pairs: tail[2 l], tail[2 l + 1].
+  alignas(64) double tail[16];
+  const __m512i first = _mm512_set_epi64(11, 3, 10, 2, 9, 1, 8, 0);
+  const __m512i second = _mm512_set_epi64(15, 7, 14, 6, 13, 5, 12, 4);
+  const __m512d zy = reinterpret_cast<__m512d>(minus_L[7]), zz = reinterpret_cast<__m512d>(minus_L[8]);
+  _mm512_store_pd(tail, _mm512_permutex2var_pd(zy, first, zz));
+  _mm512_store_pd(tail + 8, _mm512_permutex2var_pd(zy, second, zz));
+  for (std::size_t l = 0; l < width; ++l) {
+    if (j[l] >= n) continue;  // ghosts and coupling points have no sums of their own
+    double* sums = &own[j[l]].rate;
+    _mm512_storeu_pd(sums, _mm512_add_pd(_mm512_loadu_pd(sums), rows[l]));
+    _mm_storeu_pd(sums + 8, _mm_add_pd(_mm_loadu_pd(sums + 8), _mm_load_pd(tail + 2 * l)));
+  }
+}
+
+// The force row's j sides in 3-D: the acceleration (-= reaction), the compression rate (the
+// larger of it and -mu, as std::max: the sum unless it is less than -mu), the count, and the
+// pair's dissipative term stored per entry (every lane, ghosts included).
+template <class Sum>
+inline void scatter_force_sums(const Lanes reaction[3], const Lanes& mu, const Lanes dissipation[3],
+                               LaneMask inside, const std::uint32_t* j, std::size_t width, std::size_t n,
+                               Sum* own, Vec<3>* out) {
+  static_assert(offsetof(Sum, compression_rate) == 3 * sizeof(double), "acceleration, then compression_rate");
+  static_assert(sizeof(Vec<3>) == 3 * sizeof(double));
+  __m512d columns[8], rows[8];
+  for (int a = 0; a < 3; ++a) columns[a] = reinterpret_cast<__m512d>(-reaction[a]);
+  columns[3] = reinterpret_cast<__m512d>(-mu);
+  for (int a = 0; a < 3; ++a) columns[4 + a] = reinterpret_cast<__m512d>(dissipation[a]);
+  columns[7] = _mm512_setzero_pd();
+  transpose_8x8(columns, rows);
+  for (std::size_t l = 0; l < width; ++l) {
+    _mm256_mask_storeu_pd(out[l].c.data(), 0x7, _mm512_extractf64x4_pd(rows[l], 1));
+    if (j[l] >= n) continue;
+    Sum& other = own[j[l]];
+    double* sums = other.acceleration.c.data();
+    const __m256d old = _mm256_loadu_pd(sums), mine = _mm512_castpd512_pd256(rows[l]);
+    // maxpd(a, b) is a > b ? a : b: with a = -mu, b = the sum, std::max(sum, -mu)'s choice.
+    _mm256_storeu_pd(sums, _mm256_blend_pd(_mm256_add_pd(old, mine), _mm256_max_pd(mine, old), 0x8));
+    other.count += inside[l] ? 1 : 0;
+  }
+}
+#endif
 }  // namespace
 
 template <int D>
@@ -144,6 +205,13 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
       reaction[a] = force[a] * mi;
     }
     count += g.inside ? Lanes{} + 1.0 : zero;
+#if defined(__AVX512F__)
+    if constexpr (D == 3) {
+      // The same values as the loop below, moved by one transpose (transpose_8x8); 3-D has no hoop terms.
+      scatter_force_sums(reaction, mu, dissipation, g.inside, g.j, g.width, n, own, dissipation_out + e0);
+      continue;
+    }
+#endif
     for (std::size_t l = 0; l < g.width; ++l) {
       Vec<D>& out = dissipation_out[e0 + l];
       for (int a = 0; a < D; ++a) out[a] = dissipation[a][l];
@@ -152,8 +220,10 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
         for (int a = 0; a < D; ++a) other.acceleration[a] -= reaction[a][l];
         other.compression_rate = std::max(other.compression_rate, -mu[l]);
         other.count += g.inside[l] ? 1 : 0;
-        other.tensile_hoop_weight += hoop_weight_j[l];
-        other.viscous_hoop += viscous_hoop_j[l];
+        if (axisymmetric) {
+          other.tensile_hoop_weight += hoop_weight_j[l];
+          other.viscous_hoop += viscous_hoop_j[l];
+        }
       }
     }
   }
@@ -191,6 +261,12 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
     rate_sum += k.rate_i;
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) L_sum[a][b] -= k.weighted_dv_i[a] * grad[b];
+#if defined(__AVX512F__)
+    if constexpr (D == 3) {
+      scatter_kinematic_sums(k.rate_j, k.weighted_dv_j, grad, g.j, g.width, n, own);
+      continue;
+    }
+#endif
     for (std::size_t l = 0; l < g.width; ++l) {
       if (g.j[l] >= n) continue;  // ghosts and coupling points have no sums of their own
       KinematicSum& other = own[g.j[l]];

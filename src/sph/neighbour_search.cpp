@@ -77,7 +77,11 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     h_max = std::max(h_max, h[i]);
   }
   grid.origin = lo;
-  grid.size = support_factor * h_max + skin;
+  // Cells of half the largest interaction radius: the candidates of a point lie in the cells that
+  // meet the cube of that radius around it, about 5^D half cells (15.6 radii cubed in 3-D)
+  // against 3^D whole cells (27). docs/performance.md, "Half cells".
+  const double reach_max = support_factor * h_max + skin;
+  grid.size = 0.5 * reach_max;
   if (!(grid.size > 0.0)) grid.size = 1.0;
   // Keep the grid at most a few cells per point (a few far-flung points must not blow it up).
   for (;;) {
@@ -117,7 +121,15 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     h_cell[s] = h[sorted_[s]];
   }
 
-  // Visits every candidate j of point i within the 3^D cells around it, in cell order.
+  // Visits every candidate j of point i in the cells that meet the cube [x_i - reach_max,
+  // x_i + reach_max], in cell order; rows of cells along x whose distance from x_i in the other
+  // axes is beyond reach_max are skipped. Every pair within reach (at most reach_max) is visited.
+  const auto cell_range = [&](int d, double xd, std::int64_t& first, std::int64_t& last) {
+    const double lo_cell = std::floor((xd - reach_max - grid.origin[d]) / grid.size);
+    const double hi_cell = std::floor((xd + reach_max - grid.origin[d]) / grid.size);
+    first = std::clamp<std::int64_t>(static_cast<std::int64_t>(lo_cell), 0, grid.dims[d] - 1);
+    last = std::clamp<std::int64_t>(static_cast<std::int64_t>(hi_cell), 0, grid.dims[d] - 1);
+  };
   auto visit = [&](std::size_t i, auto&& on_pair) {
     const Vec<D> xi = x[i];
     const double hi = h[i];
@@ -126,27 +138,35 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     const double* hs = h_cell.data();
     const std::uint32_t* js = sorted_.data();
     const std::size_t* starts = cell_start.data();
-    const auto ci = grid.cell_of(xi);
-    const std::int64_t x_first = std::max<std::int64_t>(ci[0] - 1, 0);
-    const std::int64_t x_last = std::min<std::int64_t>(ci[0] + 1, grid.dims[0] - 1);
+    std::array<std::int64_t, D> first{}, last{};
+    for (int d = 0; d < D; ++d) cell_range(d, xi[d], first[d], last[d]);
+    // The gap from x_i to cell c along axis d (0 if inside), squared.
+    const auto gap2 = [&](int d, std::int64_t c) {
+      const double a = grid.origin[d] + static_cast<double>(c) * grid.size;
+      const double g = std::max({0.0, a - xi[d], xi[d] - (a + grid.size)});
+      return g * g;
+    };
+    const double reach2 = reach_max * reach_max;
     std::array<std::int64_t, D> c{};
-    const int n_rows = D == 2 ? 3 : 9;
-    for (int o = 0; o < n_rows; ++o) {
-      int rest = o;
-      bool inside = true;
-      for (int d = 1; d < D; ++d) {
-        c[d] = ci[d] + (rest % 3) - 1;
-        rest /= 3;
-        if (c[d] < 0 || c[d] >= grid.dims[d]) inside = false;
-      }
-      if (!inside) continue;
-      c[0] = x_first;
+    const auto row = [&] {
+      c[0] = first[0];
       const std::size_t begin = starts[grid.index(c)];
-      c[0] = x_last;
+      c[0] = last[0];
       const std::size_t end = starts[grid.index(c) + 1];
       for (std::size_t s = begin; s < end; ++s) {
         const double reach = support_factor * pair_smoothing_length(hi, hs[s]) + skin;
         if (squared_distance(xi, xs[s]) < reach * reach && js[s] != i) on_pair(js[s]);
+      }
+    };
+    if constexpr (D == 2) {
+      for (c[1] = first[1]; c[1] <= last[1]; ++c[1])
+        if (gap2(1, c[1]) < reach2) row();
+    } else {
+      for (c[2] = first[2]; c[2] <= last[2]; ++c[2]) {
+        const double g2 = gap2(2, c[2]);
+        if (!(g2 < reach2)) continue;
+        for (c[1] = first[1]; c[1] <= last[1]; ++c[1])
+          if (g2 + gap2(1, c[1]) < reach2) row();
       }
     }
   };

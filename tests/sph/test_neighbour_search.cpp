@@ -94,6 +94,23 @@ TEST(SphNeighbourSearch, RandomSet3DMatchesBruteForce) {
                 "brute-force O(N^2) search", 0.0, mismatches, 0.0, false, "particles"});
 }
 
+// A few far-flung points stretch the bounding box until the grid must grow its cells past half
+// the largest reach (the cap of a few cells per point): the visit then spans more cells per axis.
+TEST(SphNeighbourSearch, StretchedGrid3DMatchesBruteForce) {
+  std::vector<Vec<3>> x;
+  std::vector<double> h;
+  random_set<3>(x, h, 3000, 1.0, 11);
+  for (int k = 0; k < 6; ++k) {  // a small cluster 50 units away, each within reach of the others
+    x.push_back(Vec<3>{{50.0 + 0.02 * k, 0.5, 0.5 + 0.01 * k}});
+    h.push_back(h[0]);
+  }
+  const double mismatches = static_cast<double>(count_mismatches<3>(x, h, x.size(), 0.1 * h[0]));
+  test::verify(
+      {"Neighbour search, 3-D set stretched by a far cluster (grid cells grown): lists differing "
+       "from brute force",
+       "brute-force O(N^2) search", 0.0, mismatches, 0.0, false, "particles"});
+}
+
 TEST(SphNeighbourSearch, SkinKeepsListsValidUntilRebuild) {
   std::vector<Vec<3>> x;
   std::vector<double> h;

@@ -121,12 +121,13 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     h_cell[s] = h[sorted_[s]];
   }
 
-  // Visits every candidate j of point i in the cells that meet the cube [x_i - reach_max,
-  // x_i + reach_max], in cell order; rows of cells along x whose distance from x_i in the other
-  // axes is beyond reach_max are skipped. Every pair within reach (at most reach_max) is visited.
-  const auto cell_range = [&](int d, double xd, std::int64_t& first, std::int64_t& last) {
-    const double lo_cell = std::floor((xd - reach_max - grid.origin[d]) / grid.size);
-    const double hi_cell = std::floor((xd + reach_max - grid.origin[d]) / grid.size);
+  // Visits every candidate j of point i in the cells that meet the cube [x_i - reach_i,
+  // x_i + reach_i], in cell order, reach_i the largest reach of i's pairs; rows of cells along x
+  // whose distance from x_i in the other axes is beyond it are skipped. Every pair within reach is
+  // visited.
+  const auto cell_range = [&](int d, double xd, double reach, std::int64_t& first, std::int64_t& last) {
+    const double lo_cell = std::floor((xd - reach - grid.origin[d]) / grid.size);
+    const double hi_cell = std::floor((xd + reach - grid.origin[d]) / grid.size);
     first = std::clamp<std::int64_t>(static_cast<std::int64_t>(lo_cell), 0, grid.dims[d] - 1);
     last = std::clamp<std::int64_t>(static_cast<std::int64_t>(hi_cell), 0, grid.dims[d] - 1);
   };
@@ -138,15 +139,21 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     const double* hs = h_cell.data();
     const std::uint32_t* js = sorted_.data();
     const std::size_t* starts = cell_start.data();
+    // i's own largest reach: h_ij <= (h_i + h_max) / 2, so a small particle among large ones
+    // (graded fills, expanded products) scans a smaller box than the largest reach.
+    // (1 + 1e-12): the cell bounds and the point's cell are rounded separately; no pair within
+    // reach may fall outside by an ulp.
+    const double reach_i =
+        (1.0 + 1e-12) * std::min(reach_max, support_factor * pair_smoothing_length(hi, h_max) + skin);
     std::array<std::int64_t, D> first{}, last{};
-    for (int d = 0; d < D; ++d) cell_range(d, xi[d], first[d], last[d]);
+    for (int d = 0; d < D; ++d) cell_range(d, xi[d], reach_i, first[d], last[d]);
     // The gap from x_i to cell c along axis d (0 if inside), squared.
     const auto gap2 = [&](int d, std::int64_t c) {
       const double a = grid.origin[d] + static_cast<double>(c) * grid.size;
       const double g = std::max({0.0, a - xi[d], xi[d] - (a + grid.size)});
       return g * g;
     };
-    const double reach2 = reach_max * reach_max;
+    const double reach2 = reach_i * reach_i;
     std::array<std::int64_t, D> c{};
     const auto row = [&] {
       c[0] = first[0];

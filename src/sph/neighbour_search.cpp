@@ -79,7 +79,7 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
   grid.origin = lo;
   // Cells of half the largest interaction radius: the candidates of a point lie in the cells that
   // meet the cube of that radius around it, about 5^D half cells (15.6 radii cubed in 3-D)
-  // against 3^D whole cells (27). docs/performance.md, "Half cells".
+  // against 3^D whole cells (27). docs/performance.md, "SPH partner sums by transpose, half cells".
   const double reach_max = support_factor * h_max + skin;
   grid.size = 0.5 * reach_max;
   if (!(grid.size > 0.0)) grid.size = 1.0;

@@ -59,7 +59,8 @@ struct PairGroup {
   }
 };
 
-#if defined(__AVX512F__)
+// (AVX-512VL: the 256-bit masked and blended stores of scatter_force_sums.)
+#if defined(__AVX512F__) && defined(__AVX512VL__)
 // The j sides of a group of pair-once rows in 3-D, added to the partners' sums (j < n) as the
 // scalar loops of the rows do, lane by lane: each lane's values are gathered into one register
 // by an 8 x 8 transpose rather than inserted value by value, and added with whole-register
@@ -205,7 +206,7 @@ void SphSystem<D>::force_row_lanes(std::size_t i, ForceSum* own) {
       reaction[a] = force[a] * mi;
     }
     count += g.inside ? Lanes{} + 1.0 : zero;
-#if defined(__AVX512F__)
+#if defined(__AVX512F__) && defined(__AVX512VL__)
     if constexpr (D == 3) {
       // The same values as the loop below, moved by one transpose (transpose_8x8); 3-D has no hoop terms.
       scatter_force_sums(reaction, mu, dissipation, g.inside, g.j, g.width, n, own, dissipation_out + e0);
@@ -261,7 +262,7 @@ void SphSystem<D>::kinematics_row_lanes(std::size_t i, KinematicSum* own) {
     rate_sum += k.rate_i;
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) L_sum[a][b] -= k.weighted_dv_i[a] * grad[b];
-#if defined(__AVX512F__)
+#if defined(__AVX512F__) && defined(__AVX512VL__)
     if constexpr (D == 3) {
       scatter_kinematic_sums(k.rate_j, k.weighted_dv_j, grad, g.j, g.width, n, own);
       continue;

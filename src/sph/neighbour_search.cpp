@@ -64,8 +64,6 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
   sorted_.clear();
   if (n == 0) return;
 
-  // Grid: cell edge = the largest interaction radius, so that all partners lie
-  // in the 3^D surrounding cells.
   CellGrid<D> grid;
   Vec<D> lo = x[0], hi = x[0];
   double h_max = 0.0;
@@ -111,8 +109,8 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
   }
 
   // Positions and smoothing lengths in cell order, so that the candidates of
-  // a cell are read contiguously. The three cells along x of each (y, z) row
-  // of the 3^D block are consecutive in that order: one range per row.
+  // a cell are read contiguously. The cells along x of each (y, z) row of the
+  // block visited are consecutive in that order: one range per row.
   std::vector<Vec<D>> x_cell(n);
   std::vector<double> h_cell(n);
 #pragma omp parallel for schedule(static)
@@ -139,12 +137,11 @@ void NeighbourSearch<D>::build(std::span<const Vec<D>> x, std::span<const double
     const double* hs = h_cell.data();
     const std::uint32_t* js = sorted_.data();
     const std::size_t* starts = cell_start.data();
-    // i's own largest reach: h_ij <= (h_i + h_max) / 2, so a small particle among large ones
-    // (graded fills, expanded products) scans a smaller box than the largest reach.
-    // (1 + 1e-12): the cell bounds and the point's cell are rounded separately; no pair within
-    // reach may fall outside by an ulp.
-    const double reach_i =
-        (1.0 + 1e-12) * std::min(reach_max, support_factor * pair_smoothing_length(hi, h_max) + skin);
+    // i's own largest reach (at most reach_max): h_ij <= (h_i + h_max) / 2, so a small particle among large
+    // ones (graded fills, expanded products) scans a smaller box than the largest reach. (1 + 1e-12): the
+    // cell bounds and the point's cell are rounded separately; no pair within reach may fall outside by an
+    // ulp.
+    const double reach_i = (1.0 + 1e-12) * (support_factor * pair_smoothing_length(hi, h_max) + skin);
     std::array<std::int64_t, D> first{}, last{};
     for (int d = 0; d < D; ++d) cell_range(d, xi[d], reach_i, first[d], last[d]);
     // The gap from x_i to cell c along axis d (0 if inside), squared.

@@ -8,10 +8,11 @@
 // because a pair's distance shrinks by at most twice the largest displacement
 // and its support grows by at most twice the largest growth of h. The owner
 // asks needs_rebuild() each cycle; rebuilding is O(N): particles are sorted by
-// cell with a counting sort and only the 3^D surrounding cells are searched.
+// cell (cells of half the largest reach) with a counting sort, and only the
+// cells within a point's own largest reach are searched.
 //
 // Lists are full (both i->j and j->i) and in the order of the build's visit:
-// the 3^D cells around i in ascending cell index, each cell's points in
+// the cells within i's reach in ascending cell index, each cell's points in
 // ascending index. That order is fixed by the positions at the build alone
 // (any thread count gives the same lists); it is not sorted by j. The pair
 // sums of SphSystem run over a thin-skin sub-list of them, each particle pair

@@ -35,6 +35,33 @@ inline void hourglass_shapes(const PackedNodes<D>& x, const PackedNodes<D>& b,
   }
 }
 
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+// The pack's node values as one record per lane and node: rows[l][a][i] = f[i][a][l] (the 3-D
+// records padded to 4), by 8 x 8 transposes of whole registers.
+template <int D, int S>
+inline void node_records(const PackedNodes<D>& f, double (&rows)[pack_width][Shape<D>::nodes][S]) {
+  constexpr int N = Shape<D>::nodes;
+  __m512d columns[8], out[8];
+  if constexpr (D == 3) {
+    static_assert(S == 4);
+    for (int a = 0; a < N; a += 2) {  // nodes a and a + 1: rows[l][a .. a + 1] is one 64-byte line
+      for (int b = 0; b < 2; ++b) {
+        for (int i = 0; i < 3; ++i) columns[4 * b + i] = reinterpret_cast<__m512d>(f[i][a + b]);
+        columns[4 * b + 3] = _mm512_setzero_pd();
+      }
+      simd::transpose_8x8(columns, out);
+      for (int l = 0; l < 8; ++l) _mm512_store_pd(rows[l][a], out[l]);
+    }
+  } else {
+    static_assert(S == 2 && N == 4);
+    for (int a = 0; a < N; ++a)
+      for (int i = 0; i < 2; ++i) columns[2 * a + i] = reinterpret_cast<__m512d>(f[i][a]);
+    simd::transpose_8x8(columns, out);
+    for (int l = 0; l < 8; ++l) _mm512_store_pd(rows[l][0], out[l]);
+  }
+}
+#endif
+
 }  // namespace
 
 template <int D>
@@ -297,6 +324,48 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
   // Only the viscous form's forces go to fh_out: the stiffness form's
   // energy is held as a state (the return value), not integrated as work.
   const bool scatter_hourglass = fh_out && viscous_hg;
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+  // The lanes' values turned into per-lane node records by transposes (element_gather.hpp does
+  // the reverse) and each node's D values added with one masked load, add and store: the same
+  // additions in the same order as the loop below, so the same bits.
+  {
+    constexpr int S = D == 3 ? 4 : 2;  // doubles per node record (3-D: x y z and a pad)
+    alignas(64) double f_rows[W][N][S], h_rows[W][N][S];
+    node_records<D>(fe, f_rows);
+    if (scatter_hourglass) node_records<D>(fh, h_rows);
+    constexpr __mmask8 mask = D == 3 ? 0x7 : 0x3;
+    for (int l = 0; l < count; ++l) {
+      const std::size_t e = lanes.at(l);
+      if constexpr (into_slots) {  // every slot written, eroded elements' with noughts
+        const bool gone = eroded[e] != 0, lane_hourglass = scatter_hourglass && !stiff[l] && !gone;
+        for (int a = 0; a < N; ++a) {
+          const std::size_t k = (e * N + static_cast<std::size_t>(a)) * D;
+          const __m256d zero = _mm256_setzero_pd();
+          _mm256_mask_storeu_pd(f_out + k, mask, gone ? zero : _mm256_maskz_loadu_pd(mask, f_rows[l][a]));
+          if (fh_out)
+            _mm256_mask_storeu_pd(fh_out + k, mask,
+                                  lane_hourglass ? _mm256_maskz_loadu_pd(mask, h_rows[l][a]) : zero);
+        }
+        continue;
+      }
+      if (eroded[e]) continue;
+      const std::int64_t* c = connectivity.data() + e * N;
+      const bool scatter_lane = scatter_hourglass && !stiff[l];
+      // x and y as one 128-bit add, z (3-D) alone: a masked store does not forward to the next
+      // load of the same node (the next lane's element shares it), which stalled the loop.
+      const auto add_to = [](double* sums, const double* values) {
+        _mm_storeu_pd(sums, _mm_add_pd(_mm_loadu_pd(sums), _mm_load_pd(values)));
+        if constexpr (D == 3) sums[2] += values[2];
+      };
+      for (int a = 0; a < N; ++a) {
+        const std::int64_t k = c[a] * D;
+        add_to(f_out + k, f_rows[l][a]);
+        if (scatter_lane) add_to(fh_out + k, h_rows[l][a]);
+      }
+    }
+    return stored;
+  }
+#endif
   for (int l = 0; l < count; ++l) {
     const std::size_t e = lanes.at(l);
     if constexpr (into_slots) {  // every slot written, eroded elements' with noughts

@@ -22,6 +22,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/simd_transpose.hpp"
 #include "sph/pair_point.hpp"
 
 namespace camouflet::sph {
@@ -100,33 +101,7 @@ inline Lanes gather(const PairPoint<D>* points, const std::uint32_t* j, int fiel
 }
 
 #if defined(__AVX512F__)
-// The 8 x 8 transpose of doubles: out[c][r] = in[r][c] (8 loads' worth of rows become 8
-// columns and back), in 24 shuffles. It only moves values: no bits change.
-inline void transpose_8x8(const __m512d in[8], __m512d out[8]) {
-  // Index vectors of _mm512_permutex2var_pd (8 + k picks lane k of the second operand).
-  const __m512i pairs_lo = _mm512_set_epi64(13, 12, 5, 4, 9, 8, 1, 0);
-  const __m512i pairs_hi = _mm512_set_epi64(15, 14, 7, 6, 11, 10, 3, 2);
-  const __m512i quads_lo = _mm512_set_epi64(11, 10, 9, 8, 3, 2, 1, 0);
-  const __m512i quads_hi = _mm512_set_epi64(15, 14, 13, 12, 7, 6, 5, 4);
-  __m512d t[8];  // t[2q] = in(2q)_0 in(2q+1)_0 in(2q)_2 in(2q+1)_2 ..., t[2q+1] the odd columns
-  for (int q = 0; q < 4; ++q) {
-    t[2 * q] = _mm512_unpacklo_pd(in[2 * q], in[2 * q + 1]);
-    t[2 * q + 1] = _mm512_unpackhi_pd(in[2 * q], in[2 * q + 1]);
-  }
-  // u: rows 0-3 (u[0..3]) and 4-7 (u[4..7]) of columns (0, 4), (2, 6), (1, 5), (3, 7).
-  __m512d u[8];
-  for (int h = 0; h < 2; ++h) {
-    u[4 * h + 0] = _mm512_permutex2var_pd(t[4 * h + 0], pairs_lo, t[4 * h + 2]);
-    u[4 * h + 1] = _mm512_permutex2var_pd(t[4 * h + 0], pairs_hi, t[4 * h + 2]);
-    u[4 * h + 2] = _mm512_permutex2var_pd(t[4 * h + 1], pairs_lo, t[4 * h + 3]);
-    u[4 * h + 3] = _mm512_permutex2var_pd(t[4 * h + 1], pairs_hi, t[4 * h + 3]);
-  }
-  constexpr int column_of[4] = {0, 2, 1, 3};  // first column held by u[k] (and column + 4)
-  for (int k = 0; k < 4; ++k) {
-    out[column_of[k]] = _mm512_permutex2var_pd(u[k], quads_lo, u[k + 4]);
-    out[column_of[k] + 4] = _mm512_permutex2var_pd(u[k], quads_hi, u[k + 4]);
-  }
-}
+using simd::transpose_8x8;  // core/simd_transpose.hpp
 #endif
 
 // Fields [0, 8 lines) of the records of points j[0..pair_lanes): fields[f][l] =

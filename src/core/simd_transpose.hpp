@@ -14,19 +14,19 @@ namespace camouflet::simd {
 
 // The masked forms with every lane set and an explicit source: GCC 12's plain
 // forms pass an undefined register that it then warns about where inlined.
-inline __m512d unpacklo(__m512d a, __m512d b) {
+[[gnu::always_inline]] inline __m512d unpacklo(__m512d a, __m512d b) {
   return _mm512_mask_unpacklo_pd(_mm512_setzero_pd(), 0xFF, a, b);
 }
-inline __m512d unpackhi(__m512d a, __m512d b) {
+[[gnu::always_inline]] inline __m512d unpackhi(__m512d a, __m512d b) {
   return _mm512_mask_unpackhi_pd(_mm512_setzero_pd(), 0xFF, a, b);
 }
 // (low, high): 256-bit halves joined.
-inline __m512d join(__m256d low, __m256d high) {
+[[gnu::always_inline]] inline __m512d join(__m256d low, __m256d high) {
   return _mm512_mask_insertf64x4(_mm512_setzero_pd(), 0xFF, _mm512_castpd256_pd512(low), high, 1);
 }
 
 // out[c][r] = in[r][c] for an 8 x 8 block, in 24 shuffles.
-inline void transpose_8x8(const __m512d in[8], __m512d out[8]) {
+[[gnu::always_inline]] inline void transpose_8x8(const __m512d in[8], __m512d out[8]) {
   // Index vectors of _mm512_permutex2var_pd (8 + k picks lane k of the second operand).
   const __m512i pairs_lo = _mm512_set_epi64(13, 12, 5, 4, 9, 8, 1, 0);
   const __m512i pairs_hi = _mm512_set_epi64(15, 14, 7, 6, 11, 10, 3, 2);
@@ -54,7 +54,7 @@ inline void transpose_8x8(const __m512d in[8], __m512d out[8]) {
 
 // Rows of 4 (one 256-bit register each) into 4 columns of 8: out[c][r] = rows[r][c], in 12
 // shuffles. A column nobody reads costs nothing once inlined.
-inline void transpose_8x4(const __m256d rows[8], __m512d out[4]) {
+[[gnu::always_inline]] inline void transpose_8x4(const __m256d rows[8], __m512d out[4]) {
   const __m512i pairs_lo = _mm512_set_epi64(13, 12, 5, 4, 9, 8, 1, 0);
   const __m512i pairs_hi = _mm512_set_epi64(15, 14, 7, 6, 11, 10, 3, 2);
   __m512d q[4];  // q[k] = rows k and k + 4
@@ -69,7 +69,7 @@ inline void transpose_8x4(const __m256d rows[8], __m512d out[4]) {
 }
 
 // Rows of 2 (one 128-bit register each) into 2 columns of 8: out[c][r] = rows[r][c].
-inline void transpose_8x2(const __m128d rows[8], __m512d out[2]) {
+[[gnu::always_inline]] inline void transpose_8x2(const __m128d rows[8], __m512d out[2]) {
   __m512d q[2];  // rows 0-3 and 4-7, two values each
   for (int h = 0; h < 2; ++h) {
     const __m256d lo = _mm256_insertf128_pd(_mm256_zextpd128_pd256(rows[4 * h]), rows[4 * h + 1], 1);

@@ -155,6 +155,28 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
 
   // Stress divergence: f_ia = -V sigma_ij b_ja (FB 1981, eq. 17), with q as a pressure.
   Pack sig[D][D] = {}, hoop{};
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+  {
+    // Each lane's six stress values as one row, turned into six packs by a transpose: the same
+    // values and the same subtractions as the lane loop below.
+    static_assert(sizeof(SymTensor) == 6 * sizeof(double));
+    __m512d rows[8], columns[8];
+    for (int l = 0; l < 8; ++l) rows[l] = _mm512_maskz_loadu_pd(0x3F, &stress[lanes.at(l)].xx);
+    simd::transpose_8x8(rows, columns);
+    Pack s[6];
+    for (int c = 0; c < 6; ++c) s[c] = reinterpret_cast<Pack>(columns[c]);
+    const Pack q = load_pack(viscosity.data(), lanes);
+    sig[0][0] = s[0] - q;
+    sig[1][1] = s[1] - q;
+    sig[0][1] = sig[1][0] = s[3];
+    hoop = s[2] - q;
+    if constexpr (D == 3) {
+      sig[2][2] = s[2] - q;
+      sig[1][2] = sig[2][1] = s[4];
+      sig[0][2] = sig[2][0] = s[5];
+    }
+  }
+#else
   for (int l = 0; l < W; ++l) {
     const std::size_t e = lanes.at(l);
     const SymTensor& s = stress[e];
@@ -169,6 +191,7 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
       sig[0][2][l] = sig[2][0][l] = s.zx;
     }
   }
+#endif
   // The lanes in the r-z area form: all, none, or (parts of both forms meet in this pack) some.
   bool all_area = area, no_area = !area;
   bool area_lane[W];

@@ -180,6 +180,60 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
     bool whole = count == W;
     for (int l = 0; l < count && whole; ++l)
       whole = !eroded[e0 + static_cast<std::size_t>(l)] && vol[l] > 0.0 && std::isfinite(vol[l]);
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+    // A whole pack of one material whose points are consecutive, without subzones or edge forces
+    // (the usual case): the points' arrays written as whole packs, the strain rates and spins
+    // turned into per-point records by transposes. The same values and the same viscous-work sum
+    // (element order) as the lane loop below.
+    if (whole && !subzones && !edges) {
+      const int m = material[e0];
+      const std::size_t p0 = point[e0];
+      bool together = true;
+      for (int l = 1; l < W && together; ++l)
+        together = material[e0 + static_cast<std::size_t>(l)] == m &&
+                   point[e0 + static_cast<std::size_t>(l)] == p0 + static_cast<std::size_t>(l);
+      if (together) {
+        for (int l = 0; l < W; ++l) {
+          if constexpr (D == 2)
+            if (corner_jacobians_negative<D>(xe, l) >= 2)
+              tangled = std::min(tangled, static_cast<std::int64_t>(e0 + static_cast<std::size_t>(l)));
+          viscous_work -= work[l];
+        }
+        MaterialPoints& pts = batches[static_cast<std::size_t>(m)];
+        store_pack(pts.density_previous.data(), p0, load_pack(pts.density.data(), p0, W));
+        store_pack(pts.density.data(), p0, rho);
+        store_pack(pts.artificial_viscosity.data(), p0, q_mean);
+        store_pack(pts.characteristic_length.data(), p0, le);
+        static_assert(sizeof(SymTensor) == 6 * sizeof(double) && sizeof(Spin) == 3 * sizeof(double));
+        const __m512d zero = _mm512_setzero_pd();
+        __m512d columns[8] = {reinterpret_cast<__m512d>(L[0][0]),
+                              reinterpret_cast<__m512d>(L[1][1]),
+                              reinterpret_cast<__m512d>(L[2][2]),
+                              reinterpret_cast<__m512d>(d_xy),
+                              reinterpret_cast<__m512d>(d_yz),
+                              reinterpret_cast<__m512d>(d_zx),
+                              zero,
+                              zero};
+        __m512d rows[8];
+        simd::transpose_8x8(columns, rows);
+        for (int l = 0; l < W; ++l)
+          _mm512_mask_storeu_pd(&pts.strain_rate[p0 + static_cast<std::size_t>(l)].xx, 0x3F, rows[l]);
+        columns[0] = reinterpret_cast<__m512d>(w_xy);
+        columns[1] = reinterpret_cast<__m512d>(w_yz);
+        columns[2] = reinterpret_cast<__m512d>(w_zx);
+        for (int c = 3; c < 6; ++c) columns[c] = zero;
+        simd::transpose_8x8(columns, rows);
+        for (int l = 0; l < W; ++l)
+          _mm512_mask_storeu_pd(&pts.spin[p0 + static_cast<std::size_t>(l)].xy, 0x7, rows[l]);
+        store_pack(volume.data(), e0, vol);
+        store_pack(density.data(), e0, rho);
+        store_pack(viscosity.data(), e0, q);
+        store_pack(length.data(), e0, le);
+        store_pack(speed.data(), e0, speed_pack);
+        continue;
+      }
+    }
+#endif
     int batch_index = -1;
     double *pts_density = nullptr, *pts_density_previous = nullptr, *pts_viscosity = nullptr,
            *pts_length = nullptr, *pts_energy = nullptr;

@@ -29,6 +29,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "fem/element_pack.hpp"
+
 namespace camouflet {
 
 template <int D>
@@ -56,39 +58,40 @@ struct ElementEdges<3> {
 };
 
 // The median areas A_k (m^2; plane strain: m per metre of depth) of an element's edges at the
-// node positions x[i][a].
-template <int D>
-inline void edge_median_areas(const double (&x)[D][ElementEdges<D>::nodes], bool axisymmetric,
-                              double (&area)[ElementEdges<D>::count]) {
+// node positions x[i][a]. T: double for one element or Pack for a pack of them (the same
+// operations per lane, element_pack.hpp).
+template <int D, class T>
+inline void edge_median_areas(const T (&x)[D][ElementEdges<D>::nodes], bool axisymmetric,
+                              T (&area)[ElementEdges<D>::count]) {
   using E = ElementEdges<D>;
-  double centre[D] = {};
+  T centre[D] = {};
   for (int a = 0; a < E::nodes; ++a)
-    for (int i = 0; i < D; ++i) centre[i] += x[i][a] / E::nodes;
+    for (int i = 0; i < D; ++i) centre[i] += x[i][a] / static_cast<double>(E::nodes);
   if constexpr (D == 2) {
     for (int k = 0; k < E::count; ++k) {
       const int p = E::node[k][0], q = E::node[k][1];
-      const double mr = 0.5 * (x[0][p] + x[0][q]), mz = 0.5 * (x[1][p] + x[1][q]);
-      const double length = std::hypot(centre[0] - mr, centre[1] - mz);
+      const T mr = 0.5 * (x[0][p] + x[0][q]), mz = 0.5 * (x[1][p] + x[1][q]);
+      const T length = hypot_of(centre[0] - mr, centre[1] - mz);
       // r-z: the segment sweeps a cone of radius r at its middle per radian.
       area[k] = axisymmetric ? length * std::numbers::pi * (centre[0] + mr) : length;
     }
   } else {
-    double face_centre[6][3] = {};
+    T face_centre[6][3] = {};
     for (int f = 0; f < 6; ++f)
       for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 3; ++i) face_centre[f][i] += 0.25 * x[i][E::face[f][j]];
     for (int k = 0; k < E::count; ++k) {
       const int p = E::node[k][0], q = E::node[k][1];
-      const double* f1 = face_centre[E::faces_of[k][0]];
-      const double* f2 = face_centre[E::faces_of[k][1]];
-      double d1[3], d2[3];
+      const T* f1 = face_centre[E::faces_of[k][0]];
+      const T* f2 = face_centre[E::faces_of[k][1]];
+      T d1[3], d2[3];
       for (int i = 0; i < 3; ++i) {
         d1[i] = centre[i] - 0.5 * (x[i][p] + x[i][q]);
         d2[i] = f2[i] - f1[i];
       }
-      const double cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2],
-                   cz = d1[0] * d2[1] - d1[1] * d2[0];
-      area[k] = 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+      const T cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2],
+              cz = d1[0] * d2[1] - d1[1] * d2[0];
+      area[k] = 0.5 * sqrt_of(cx * cx + cy * cy + cz * cz);
     }
   }
 }
@@ -121,27 +124,25 @@ inline double edge_limiter(const double* du, const double* dx, const double* du_
 
 // The edge forces F (count * D: F_k on the edge's first node, -F_k on its second) of an element
 // at positions x with node velocities v, density rho (kg/m^3) and sound speed c (m/s); psi: the
-// limiter of each edge (edge_limiter), nullptr for none.
-template <int D>
-inline void edge_viscous_forces(const double (&x)[D][ElementEdges<D>::nodes],
-                                const double (&v)[D][ElementEdges<D>::nodes], bool axisymmetric, double rho,
-                                double c, double c_quadratic, double c_linear, double* force,
-                                const double* psi = nullptr) {
+// limiter of each edge (edge_limiter), nullptr for none. T: double or Pack, as edge_median_areas.
+template <int D, class T>
+inline void edge_viscous_forces(const T (&x)[D][ElementEdges<D>::nodes],
+                                const T (&v)[D][ElementEdges<D>::nodes], bool axisymmetric, T rho, T c,
+                                double c_quadratic, double c_linear, T* force, const T* psi = nullptr) {
   using E = ElementEdges<D>;
-  double area[E::count];
+  T area[E::count];
   edge_median_areas<D>(x, axisymmetric, area);
   const double cq2 = c_quadratic * c_quadratic;
   for (int k = 0; k < E::count; ++k) {
     const int p = E::node[k][0], q = E::node[k][1];
-    double du[D], closing = 0.0, du2 = 0.0;
+    T du[D], closing{}, du2{};
     for (int i = 0; i < D; ++i) {
       du[i] = v[i][q] - v[i][p];
       closing += du[i] * (x[i][q] - x[i][p]);
       du2 += du[i] * du[i];
     }
-    const double kept = psi != nullptr ? 1.0 - psi[k] : 1.0;
-    const double coefficient =
-        closing < 0.0 ? kept * rho * (cq2 * std::sqrt(du2) + c_linear * c) * area[k] : 0.0;
+    const T kept = psi != nullptr ? 1.0 - psi[k] : T{} + 1.0;
+    const T coefficient = closing < 0.0 ? kept * rho * (cq2 * sqrt_of(du2) + c_linear * c) * area[k] : T{};
     for (int i = 0; i < D; ++i) force[k * D + i] = coefficient * du[i];
   }
 }

@@ -305,7 +305,45 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
   // The edge viscosity's forces and the subzonal pressures' from the last kinematics
   // (edge_viscosity.hpp, subzonal_pressure.hpp: f_a = sum_s dp_s dV_s/dx_a); in the r-z area
   // form planar, times each node's ring factor.
-  if (!el.edge_force.empty() || !el.subzone_pressure.empty()) {
+  // Lanes that all take the same subzone measure (every lane in the area form or none) run on the
+  // pack: the same operations per lane as the lane loop after it (subzone_volumes on packs, a
+  // lane select where that loop skips a zero dp), so the same bits.
+  bool same_measure = true;
+  for (int l = 1; l < count; ++l) same_measure = same_measure && area_lane[l] == area_lane[0];
+  if ((!el.edge_force.empty() || !el.subzone_pressure.empty()) && same_measure) {
+    using E = ElementEdges<D>;
+    Pack fl[D][N] = {};
+    if (!el.edge_force.empty()) {
+      for (int k = 0; k < E::count; ++k)
+        for (int i = 0; i < D; ++i) {
+          Pack force;
+          for (int l = 0; l < W; ++l)
+            force[l] = el.edge_force[lanes.at(l) * static_cast<std::size_t>(E::count * D) +
+                                     static_cast<std::size_t>(k * D + i)];
+          fl[i][E::node[k][0]] += force;
+          fl[i][E::node[k][1]] -= force;
+        }
+    }
+    if (!el.subzone_pressure.empty()) {
+      Pack v_s[N], grad[N][D][N];
+      subzone_volumes<D>(xe, axi && !area_lane[0], v_s, grad);
+      for (int s = 0; s < N; ++s) {
+        Pack dp;
+        for (int l = 0; l < W; ++l)
+          dp[l] = el.subzone_pressure[lanes.at(l) * N + static_cast<std::size_t>(s)];
+        for (int i = 0; i < D; ++i)
+          for (int a = 0; a < N; ++a) fl[i][a] = dp != 0.0 ? fl[i][a] + dp * grad[s][i][a] : fl[i][a];
+      }
+    }
+    for (int a = 0; a < N; ++a) {
+      Pack ring = broadcast(1.0);
+      if (area_lane[0])
+        for (int l = 0; l < W; ++l)
+          ring[l] = ring_factor_[static_cast<std::size_t>(
+              connectivity[lanes.at(l) * N + static_cast<std::size_t>(a)])];
+      for (int i = 0; i < D; ++i) fe[i][a] += ring * fl[i][a];
+    }
+  } else if (!el.edge_force.empty() || !el.subzone_pressure.empty()) {
     using E = ElementEdges<D>;
     for (int l = 0; l < count; ++l) {
       const std::size_t e = lanes.at(l);

@@ -41,6 +41,14 @@ inline double sqrt_of(double a) {
 // extract and one insert per lane (docs/performance.md, "hex8 at 74eacb6"). The
 // results are those of the scalar versions lane by lane (a compare and a
 // select; the correctly rounded IEEE square root).
+inline double hypot_of(double a, double b) {
+  return std::hypot(a, b);
+}
+inline Pack hypot_of(const Pack& a, const Pack& b) {  // glibc's hypot lane by lane (no vector form)
+  Pack r;
+  for (int l = 0; l < pack_width; ++l) r[l] = std::hypot(a[l], b[l]);
+  return r;
+}
 inline Pack max_of(const Pack& a, const Pack& b) {
   return a < b ? b : a;
 }

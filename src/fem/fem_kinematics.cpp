@@ -234,6 +234,59 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
       }
     }
 #endif
+    // The subzone volumes at t_(n+1) of the whole pack at once where every lane takes the same
+    // measure (subzone_volumes on packs: each lane has the bits of the element alone).
+    bool subzone_pack = false;
+    for (int l = 0; l < count && subzones; ++l)
+      subzone_pack = subzone_pack || subzonal_coefficient[e0 + static_cast<std::size_t>(l)] > 0.0;
+    for (int l = 1; l < count && subzone_pack; ++l)
+      subzone_pack = area_form(e0 + static_cast<std::size_t>(l)) == area_form(e0);
+    Pack subzone_volume_pack[N];
+    if (subzone_pack) subzone_volumes<D>(xe, axi && !area_form(e0), subzone_volume_pack);
+    // The limiter psi of each edge of lane l's element e, from the velocity differences along the
+    // edges' continuations (global nodes at the same x(n+1), v(n+1/2)).
+    const auto edge_limiters = [&](int l, std::size_t e, double(&psi)[ElementEdges<D>::count]) {
+      using Edges = ElementEdges<D>;
+      for (int kk = 0; kk < Edges::count; ++kk) {
+        const int first = Edges::node[kk][0], second = Edges::node[kk][1];
+        double du[D], dx[D], du_l[D], dx_l[D], du_r[D], dx_r[D];
+        for (int i = 0; i < D; ++i)
+          du[i] = ve[i][second][l] - ve[i][first][l], dx[i] = xe[i][second][l] - xe[i][first][l];
+        const std::int64_t* beyond =
+            &edge_continuation[(e * Edges::count + static_cast<std::size_t>(kk)) * 2];
+        if (beyond[0] >= 0)
+          for (int i = 0; i < D; ++i) {
+            const std::size_t n = static_cast<std::size_t>(beyond[0]) * D + static_cast<std::size_t>(i);
+            du_l[i] = ve[i][first][l] - v[n], dx_l[i] = xe[i][first][l] - x[n];
+          }
+        if (beyond[1] >= 0)
+          for (int i = 0; i < D; ++i) {
+            const std::size_t n = static_cast<std::size_t>(beyond[1]) * D + static_cast<std::size_t>(i);
+            du_r[i] = v[n] - ve[i][second][l], dx_r[i] = x[n] - xe[i][second][l];
+          }
+        psi[kk] = edge_limiter<D>(du, dx, beyond[0] >= 0 ? du_l : nullptr, beyond[0] >= 0 ? dx_l : nullptr,
+                                  beyond[1] >= 0 ? du_r : nullptr, beyond[1] >= 0 ? dx_r : nullptr);
+      }
+    };
+    // The new edge forces of the whole pack where every lane takes the same measure (edge_viscous_forces
+    // on packs: each lane has the bits of the element alone); the limiters stay lane by lane.
+    bool edge_pack = false;
+    for (int l = 0; l < count && edges; ++l) edge_pack = edge_pack || form[l] == ViscosityForm::edge;
+    for (int l = 1; l < count && edge_pack; ++l)
+      edge_pack = area_form(e0 + static_cast<std::size_t>(l)) == area_form(e0);
+    Pack edge_force_pack[edge_values];
+    if (edge_pack) {
+      const bool limited = !edge_continuation.empty();
+      Pack psi[ElementEdges<D>::count];
+      if (limited)
+        for (int l = 0; l < W; ++l) {
+          double psi_l[ElementEdges<D>::count];
+          edge_limiters(l, e0 + static_cast<std::size_t>(std::min(l, count - 1)), psi_l);
+          for (int k = 0; k < ElementEdges<D>::count; ++k) psi[k][l] = psi_l[k];
+        }
+      edge_viscous_forces<D>(xe, ve, axi && !area_form(e0), rho, load_pack(wave_speed.data(), e0, count),
+                             visc.quadratic, visc.linear, edge_force_pack, limited ? psi : nullptr);
+    }
     int batch_index = -1;
     double *pts_density = nullptr, *pts_density_previous = nullptr, *pts_viscosity = nullptr,
            *pts_length = nullptr, *pts_energy = nullptr;
@@ -292,7 +345,10 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
         // old and the new dp_s each over half of dV_s (as q's), goes into the element. The r-z
         // area form measures the subzones by their areas and books the work on the ring 2 pi r_bar.
         double v_new[N];
-        subzone_volumes<D>(xl, ring_volumes, v_new);
+        if (subzone_pack)
+          for (int a = 0; a < N; ++a) v_new[a] = subzone_volume_pack[a][l];
+        else
+          subzone_volumes<D>(xl, ring_volumes, v_new);
         double total = 0.0;
         for (int a = 0; a < N; ++a) total += v_new[a];
         const double stiffness = subzonal_coefficient[e] * wave_speed[e] * wave_speed[e] * rho[l];
@@ -325,34 +381,16 @@ KinematicsResult FemElements<D>::kinematics(const double* x, const double* v, co
                   : 1.0;
           for (int i = 0; i < D; ++i) vw[i][a] = ring * vl[i][a];
         }
-        // The limiter from the velocity differences along each edge's continuations (global
-        // nodes at the same x(n+1), v(n+1/2)).
-        double psi[ElementEdges<D>::count];
-        const bool limited = !edge_continuation.empty();
-        if (limited) {
-          using Edges = ElementEdges<D>;
-          for (int kk = 0; kk < Edges::count; ++kk) {
-            const int first = Edges::node[kk][0], second = Edges::node[kk][1];
-            double du[D], dx[D], du_l[D], dx_l[D], du_r[D], dx_r[D];
-            for (int i = 0; i < D; ++i) du[i] = vl[i][second] - vl[i][first], dx[i] = xl[i][second] - xl[i][first];
-            const std::int64_t* beyond = &edge_continuation[(e * Edges::count + static_cast<std::size_t>(kk)) * 2];
-            if (beyond[0] >= 0)
-              for (int i = 0; i < D; ++i) {
-                const std::size_t n = static_cast<std::size_t>(beyond[0]) * D + static_cast<std::size_t>(i);
-                du_l[i] = vl[i][first] - v[n], dx_l[i] = xl[i][first] - x[n];
-              }
-            if (beyond[1] >= 0)
-              for (int i = 0; i < D; ++i) {
-                const std::size_t n = static_cast<std::size_t>(beyond[1]) * D + static_cast<std::size_t>(i);
-                du_r[i] = v[n] - vl[i][second], dx_r[i] = x[n] - xl[i][second];
-              }
-            psi[kk] = edge_limiter<D>(du, dx, beyond[0] >= 0 ? du_l : nullptr, beyond[0] >= 0 ? dx_l : nullptr,
-                                      beyond[1] >= 0 ? du_r : nullptr, beyond[1] >= 0 ? dx_r : nullptr);
-          }
-        }
         const double old_power = edge_viscous_power<D>(force, vw);
-        edge_viscous_forces<D>(xl, vl, ring_volumes, rho[l], wave_speed[e], visc.quadratic, visc.linear, force,
-                               limited ? psi : nullptr);
+        if (edge_pack) {
+          for (std::size_t k = 0; k < edge_values; ++k) force[k] = edge_force_pack[k][l];
+        } else {
+          double psi[ElementEdges<D>::count];
+          const bool limited = !edge_continuation.empty();
+          if (limited) edge_limiters(l, e, psi);
+          edge_viscous_forces<D>(xl, vl, ring_volumes, rho[l], wave_speed[e], visc.quadratic, visc.linear,
+                                 force, limited ? psi : nullptr);
+        }
         const double heat = 0.5 * dt * (old_power + edge_viscous_power<D>(force, vw));
         pts_energy[p] += heat / mass[e];
         viscous_work += heat;

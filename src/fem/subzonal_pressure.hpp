@@ -72,21 +72,22 @@ struct Subzones {
 };
 
 // The volumes V_s (m^3; plane strain m^2 per metre) of an element's subzones at node positions
-// x[i][a], and when `gradient` is not null their derivatives gradient[s][i][a] = dV_s/dx_ia.
-template <int D>
-inline void subzone_volumes(const double (&x)[D][Shape<D>::nodes], bool axisymmetric,
-                            double (&volume)[Shape<D>::nodes],
-                            double (*gradient)[D][Shape<D>::nodes] = nullptr) {
+// x[i][a], and when `gradient` is not null their derivatives gradient[s][i][a] = dV_s/dx_ia. T is
+// double for one element or a pack of elements (element_pack.hpp: each lane does the same
+// operations in the same order, so a lane has the bits of the element alone).
+template <int D, class T>
+inline void subzone_volumes(const T (&x)[D][Shape<D>::nodes], bool axisymmetric, T (&volume)[Shape<D>::nodes],
+                            T (*gradient)[D][Shape<D>::nodes] = nullptr) {
   constexpr int N = Shape<D>::nodes;
   const typename Subzones<D>::Table& w = Subzones<D>::corners();
   for (int s = 0; s < N; ++s) {
-    double corner[D][N] = {}, b[D][N];
+    T corner[D][N] = {}, b[D][N];
     for (int k = 0; k < N; ++k)
       for (int j = 0; j < N; ++j)
         if (w[s][k][j] != 0.0)
           for (int i = 0; i < D; ++i) corner[i][k] += w[s][k][j] * x[i][j];
-    const double measure = Shape<D>::gradients(corner, b);
-    double ring = 1.0, r_bar = 0.0;
+    const T measure = Shape<D>::gradients(corner, b);
+    T ring = T{} + 1.0, r_bar{};
     if constexpr (D == 2) {
       if (axisymmetric) {
         r_bar = 0.25 * (corner[0][0] + corner[0][1] + corner[0][2] + corner[0][3]);
@@ -96,7 +97,7 @@ inline void subzone_volumes(const double (&x)[D][Shape<D>::nodes], bool axisymme
     volume[s] = measure * ring;
     if (!gradient) continue;
     // dV_s/dcorner_k = ring dA/dcorner_k (+ 2 pi A / 4 along r in r-z), then onto the nodes.
-    double d_corner[D][N];
+    T d_corner[D][N];
     for (int k = 0; k < N; ++k)
       for (int i = 0; i < D; ++i) d_corner[i][k] = ring * measure * b[i][k];
     if constexpr (D == 2) {
@@ -105,7 +106,7 @@ inline void subzone_volumes(const double (&x)[D][Shape<D>::nodes], bool axisymme
     }
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < N; ++j) {
-        double g = 0.0;
+        T g{};
         for (int k = 0; k < N; ++k) g += w[s][k][j] * d_corner[i][k];
         gradient[s][i][j] = g;
       }

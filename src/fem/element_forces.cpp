@@ -387,8 +387,9 @@ double ElementForceKernel<D>::pack(const Lanes& lanes, double* f_out, double* fh
   const bool scatter_hourglass = fh_out && viscous_hg;
 #if defined(__AVX512F__) && defined(__AVX512VL__)
   // The lanes' values turned into per-lane node records by transposes (element_gather.hpp does
-  // the reverse) and each node's D values added with one masked load, add and store: the same
-  // additions in the same order as the loop below, so the same bits.
+  // the reverse), each node's D values then added (or, into slots, stored) per record: the same
+  // additions in the same order as the lane loop below, which serves targets without AVX-512VL,
+  // so the same bits.
   {
     constexpr int S = D == 3 ? 4 : 2;  // doubles per node record (3-D: x y z and a pad)
     alignas(64) double f_rows[W][N][S], h_rows[W][N][S];

@@ -88,3 +88,55 @@ TEST(EdgeViscosity, MedianAreasOfTheUnitSquareAndCube) {
   edge_median_areas<3>(x3, false, a3);
   for (const double a : a3) EXPECT_NEAR(a, 0.25, 1e-15);  // a half by half square
 }
+
+// The element kernels run these formulas on packs of elements (element_pack.hpp) and rely on
+// each lane having the bits of its element computed alone: compared here exactly, lane by lane.
+template <int D>
+void check_packs_match_elements(bool axisymmetric) {
+  constexpr int N = Shape<D>::nodes, K = ElementEdges<D>::count;
+  Pack x[D][N], v[D][N], rho, c, psi[K];
+  double xs[pack_width][D][N], vs[pack_width][D][N];
+  std::mt19937 rng(20261208);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int l = 0; l < pack_width; ++l) {
+    distorted_unit_cell<D>(xs[l], axisymmetric ? 0.5 + l : 0.0, 7u + static_cast<unsigned>(l));
+    for (int i = 0; i < D; ++i)
+      for (int a = 0; a < N; ++a) {
+        x[i][a][l] = xs[l][i][a];
+        vs[l][i][a] = v[i][a][l] = 100.0 * u(rng);
+      }
+    rho[l] = 1800.0 + 10.0 * l;
+    c[l] = 400.0 + l;
+    for (int k = 0; k < K; ++k) psi[k][l] = 0.5 * (1.0 + u(rng));
+  }
+  Pack volume[N], gradient[N][D][N], force[K * D];
+  subzone_volumes<D>(x, axisymmetric, volume, gradient);
+  edge_viscous_forces<D>(x, v, axisymmetric, rho, c, 1.5, 0.06, force, psi);
+  for (int l = 0; l < pack_width; ++l) {
+    double volume_l[N], gradient_l[N][D][N], force_l[K * D], psi_l[K];
+    for (int k = 0; k < K; ++k) psi_l[k] = psi[k][l];
+    subzone_volumes<D>(xs[l], axisymmetric, volume_l, gradient_l);
+    edge_viscous_forces<D>(xs[l], vs[l], axisymmetric, rho[l], c[l], 1.5, 0.06, force_l, psi_l);
+    int closing = 0;
+    for (int s = 0; s < N; ++s) {
+      EXPECT_EQ(volume[s][l], volume_l[s]);
+      for (int i = 0; i < D; ++i)
+        for (int a = 0; a < N; ++a) EXPECT_EQ(gradient[s][i][a][l], gradient_l[s][i][a]);
+    }
+    for (int k = 0; k < K * D; ++k) {
+      EXPECT_EQ(force[k][l], force_l[k]);
+      closing += force_l[k] != 0.0;
+    }
+    EXPECT_GT(closing, 0) << "lane " << l << ": no edge closing, the force formula not exercised";
+  }
+}
+
+TEST(Subzones, PacksOfQuadsHaveTheBitsOfEachQuad) {
+  check_packs_match_elements<2>(false);
+}
+TEST(Subzones, PacksOfRingsHaveTheBitsOfEachRing) {
+  check_packs_match_elements<2>(true);
+}
+TEST(Subzones, PacksOfHexesHaveTheBitsOfEachHex) {
+  check_packs_match_elements<3>(false);
+}

@@ -70,9 +70,10 @@ inline void gather_packs(const double* const (&field)[F], const std::int64_t* co
 #if defined(__AVX512F__) && defined(__AVX512VL__)
   // Each lane's row of node numbers and each node's D values are read as short contiguous
   // records and turned into lanes by transposes (core/simd_transpose.hpp): the 8-lane
-  // hardware gathers this replaces (one for the node numbers and one per field and component,
-  // 2 D + 1 a node) took about half of each element kernel's time on AMD Zen 4.
-  // docs/performance.md, "hex8 gathers by transpose". The same values: no bits change.
+  // hardware gathers this replaces (per node one for its numbers and one per field and
+  // component) took about half of each element kernel's time on AMD Zen 4.
+  // docs/performance.md, "hex8 and quad4 kernels without hardware gathers". The same values: no
+  // bits change.
   alignas(64) std::int64_t node[N][pack_width];
   if constexpr (N == 8) {
     __m512d rows[8], columns[8];

@@ -10,7 +10,8 @@ namespace camouflet::sph {
 // What the pair loops read of one point (particle, ghost or coupling point),
 // refreshed before each pass: position, h, velocity and mass in the first 64
 // bytes (all that the kinematics need besides eta), S = sigma / rho, eta and
-// the wave speed in the second.
+// the wave speed in the second. The kinematics pass refreshes only the first
+// line and eta; S and the wave speed are written for the force pass.
 template <int D>
 struct alignas(64) PairPoint {
   static constexpr int x = 0;               // m, D entries

@@ -64,20 +64,29 @@ void SphSystem<D>::size_point_factors() {
 }
 
 template <int D>
-void SphSystem<D>::fill_point_factors() {
+void SphSystem<D>::fill_point_factors(FactorPass pass) {
   const std::size_t total = p_.position.size();
+  const bool forces = pass == FactorPass::forces;
   const bool tensile = options_.artificial_stress;
   const bool pack = !options_.kernel_correction;
+  // The arrays are read by the scalar rows (kernel correction; r-z with the smoothed hoop term)
+  // and, after the force pass, by the kick's axis-image work (r-z); has_tensile by the force rows
+  // and that work. The kinematics rows on lanes read the first line of the packed record and eta.
+  const bool arrays = options_.kernel_correction || mode_ == GeometryMode::axisymmetric;
   using P = PairPoint<D>;
 #pragma omp for schedule(static)
   for (std::size_t k = 0; k < total; ++k) {
     const double eta_q = quadrature_density(k);
-    factors_.sum_density[k] = eta_q;
-    factors_.inverse_density[k] = 1.0 / eta_q;
-    factors_.volume[k] = p_.mass[k] / eta_q;
-    const SymTensor& r = p_.tensile_term[k];
-    factors_.has_tensile[k] =
-        tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
+    if (arrays) {
+      factors_.sum_density[k] = eta_q;
+      factors_.inverse_density[k] = 1.0 / eta_q;
+      factors_.volume[k] = p_.mass[k] / eta_q;
+    }
+    if (forces) {
+      const SymTensor& r = p_.tensile_term[k];
+      factors_.has_tensile[k] =
+          tensile && (r.xx != 0.0 || r.yy != 0.0 || r.zz != 0.0 || r.xy != 0.0 || r.yz != 0.0 || r.zx != 0.0);
+    }
     if (!pack) continue;
     double* f = factors_.packed[k].f;
     for (int a = 0; a < D; ++a) {
@@ -86,10 +95,11 @@ void SphSystem<D>::fill_point_factors() {
     }
     f[P::h] = p_.smoothing_length[k];
     f[P::m] = p_.mass[k];
+    f[P::eta] = eta_q;  // eta_q: the pair weights (quadrature_density)
+    if (!forces) continue;
     const SymTensor& s = p_.stress_term[k];
     const double components[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.zx};
     for (int c = 0; c < 6; ++c) f[P::stress + c] = components[c];
-    f[P::eta] = eta_q;  // eta_q: the pair weights (quadrature_density)
     f[P::c] = p_.wave_speed[k];
   }
 }
@@ -170,7 +180,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   // "Fewer parallel regions").
 #pragma omp parallel
   {
-    fill_point_factors();
+    fill_point_factors(FactorPass::forces);
     // Blocks handed out one at a time (prepare_row_blocks()); rows are added up after the barrier.
     for_each_row_block(blocks, force_sums_, [&](std::size_t i, ForceSum* own) {
       if (!options_.kernel_correction && !smoothed_hoop) {  // SIMD lanes (pair_lanes.cpp), the same sums
@@ -331,8 +341,8 @@ template void SphSystem<2>::force_pass(bool);
 template void SphSystem<3>::force_pass(bool);
 template void SphSystem<2>::size_point_factors();
 template void SphSystem<3>::size_point_factors();
-template void SphSystem<2>::fill_point_factors();
-template void SphSystem<3>::fill_point_factors();
+template void SphSystem<2>::fill_point_factors(FactorPass);
+template void SphSystem<3>::fill_point_factors(FactorPass);
 template void SphSystem<2>::compute_accelerations();
 template void SphSystem<3>::compute_accelerations();
 

@@ -126,7 +126,7 @@ void SphSystem<D>::update_state(double dt, double time) {
   // each row's sums, its end-of-step eta, h and x and its material point's inputs in one pass.
 #pragma omp parallel reduction(+ : limited)
   {
-    fill_point_factors();
+    fill_point_factors(FactorPass::kinematics);
     // Blocks handed out one at a time, as in force_pass().
     for_each_row_block(blocks, kinematic_sums_, [&](std::size_t i, KinematicSum* own) {
       if (corrected || smoothed_hoop)

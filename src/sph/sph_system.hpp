@@ -233,9 +233,11 @@ class SphSystem {
   // eta_q, 1/eta_q and the volume m/eta_q of every point (particles, ghosts, coupling points), and
   // their packed records for the SIMD pair loops (pair_point.hpp), in one pass: size_point_factors()
   // outside a parallel region, then fill_point_factors() by every thread of the region that runs
-  // the pair loop (an orphaned `omp for`: the pass and the pair loop share one region).
+  // the pair loop (an orphaned `omp for`: the pass and the pair loop share one region). Only what
+  // the pass's rows and the stages up to the next fill read is written (pair_point.hpp).
+  enum class FactorPass { forces, kinematics };
   void size_point_factors();
-  void fill_point_factors();
+  void fill_point_factors(FactorPass pass);
   double geometric_weight(const Vec<D>& x) const;  // w = 2 pi |r| (r-z), 1 otherwise
   // r-z, [sph] smoothed_hoop: each particle's and ghost's share beta of the smoothed hoop sums at
   // the present positions, min(1, |r| / (smoothed_hoop_width h)), a ghost its source's, into

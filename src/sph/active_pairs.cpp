@@ -37,36 +37,32 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
     return dot(dx, dx) < reach * reach;
   };
   // One pass over the cell lists: each block of particles collects its entries
-  // in a buffer of its own, then the buffers are copied into place.
+  // in a buffer of its own, then the buffers are copied into place. Only the
+  // part of a row with j > i is kept (the pair sums read no other): a pair's
+  // distance is tested in the row of its smaller index only.
   constexpr std::size_t block = 256;
   const std::size_t n_blocks = (n + block - 1) / block;
   std::vector<std::vector<std::uint32_t>> found(n_blocks);
-  upper_.resize(n);  // first the count of row i's entries j < i, then (below) where its j > i part starts
 #pragma omp parallel for schedule(dynamic, 4)
   for (std::size_t b = 0; b < n_blocks; ++b) {
     std::vector<std::uint32_t>& buffer = found[b];
     const std::size_t end = std::min(n, (b + 1) * block);
     std::size_t candidates = 0;
     for (std::size_t i = b * block; i < end; ++i) candidates += search.neighbours(i).size();
-    buffer.reserve(candidates);
-    // A row in three parts, each in the cell lists' order: j < i, then the particles j > i,
-    // then the points without sums of their own (j >= n: ghosts, coupling points).
-    std::vector<std::uint32_t> upper_particles, other_points;
+    buffer.reserve(candidates / 2 + block);
+    // A row in two parts, each in the cell lists' order: the particles j > i, then the points
+    // without sums of their own (j >= n: ghosts, coupling points).
+    std::vector<std::uint32_t> other_points;
     for (std::size_t i = b * block; i < end; ++i) {
       const std::size_t start = buffer.size();
-      upper_particles.clear();
       other_points.clear();
       for (const std::uint32_t j : search.neighbours(i)) {
-        if (!inside(i, j)) continue;
-        if (j < i)
+        if (j <= i || !inside(i, j)) continue;
+        if (j < n)
           buffer.push_back(j);
-        else if (j < n)
-          upper_particles.push_back(j);
         else
           other_points.push_back(j);
       }
-      upper_[i] = buffer.size() - start;
-      buffer.insert(buffer.end(), upper_particles.begin(), upper_particles.end());
       buffer.insert(buffer.end(), other_points.begin(), other_points.end());
       offset_[i + 1] = buffer.size() - start;
     }
@@ -74,15 +70,8 @@ void ActivePairs<D>::refresh(const NeighbourSearch<D>& search, const std::vector
   for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
   list_.resize(offset_[n]);
 #pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < n_blocks; ++b) {
-    std::copy(found[b].begin(), found[b].end(),
-              list_.begin() + static_cast<std::ptrdiff_t>(offset_[b * block]));
-    const std::size_t end = std::min(n, (b + 1) * block);
-    for (std::size_t i = b * block; i < end; ++i) upper_[i] += offset_[i];
-  }
-  upper_index_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    upper_index_[i + 1] = upper_index_[i] + (offset_[i + 1] - upper_[i]);
+  for (std::size_t b = 0; b < n_blocks; ++b)
+    std::copy(found[b].begin(), found[b].end(), list_.begin() + static_cast<std::ptrdiff_t>(offset_[b * block]));
 }
 
 template class ActivePairs<2>;

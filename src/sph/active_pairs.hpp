@@ -36,18 +36,16 @@ class ActivePairs {
   // points that have no sums of their own (ghosts, coupling points), these last (j >= n).
   // Within each part the order of the cell lists (neighbour_search.hpp), not sorted by j.
   std::span<const std::uint32_t> upper_neighbours(std::size_t i) const {
-    return {list_.data() + upper_[i], offset_[i + 1] - upper_[i]};
+    return {list_.data() + offset_[i], offset_[i + 1] - offset_[i]};
   }
   // n + 1 entries: where row i's j > i entries start among all such entries (per-pair stores).
-  const std::vector<std::size_t>& upper_index() const { return upper_index_; }
+  const std::vector<std::size_t>& upper_index() const { return offset_; }
   // Extractions so far: what a per-pair store or a row partition belongs to.
   std::int64_t extractions() const { return extractions_; }
 
  private:
-  std::vector<std::uint32_t> list_;
-  std::vector<std::size_t> offset_;       // n + 1: row i is list_[offset_[i], offset_[i + 1])
-  std::vector<std::size_t> upper_;        // first entry of row i with j > i
-  std::vector<std::size_t> upper_index_;  // see upper_index()
+  std::vector<std::uint32_t> list_;    // the rows' j > i parts, one after another
+  std::vector<std::size_t> offset_;    // n + 1: row i's part is list_[offset_[i], offset_[i + 1])
   std::vector<Vec<D>> x_;                 // m, positions at the extraction
   std::vector<double> h_;                 // m, smoothing lengths at the extraction
   std::int64_t builds_ = -1;              // cell-list build it was extracted from (-1: none)

@@ -192,6 +192,7 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
   const auto& volume = factors_.volume;
   const auto& inv_eta = factors_.inverse_density;
   const bool smoothed_hoop = mode_ == GeometryMode::axisymmetric && options_.smoothed_hoop;
+  const bool corrected = options_.kernel_correction;
   const std::size_t coupling_begin = external_begin_;
   KinematicSum mine;
   for (const std::uint32_t j : active_upper_neighbours(i)) {
@@ -221,12 +222,14 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
         own[j].hoop_full += volume[i] * full;
       }
     }
-    const Vec<D> b_grad_i = apply<D>(p_.correction[i], grad);
+    // Without the correction B is the identity: the gradient itself (r-z with the smoothed hoop
+    // term runs this row for its hoop sums only).
+    const Vec<D> b_grad_i = corrected ? apply<D>(p_.correction[i], grad) : grad;
     mine.rate += k.rate_i;
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) mine.L[a][b] -= k.weighted_dv_i[a] * b_grad_i[b];
     if (j < n) {
-      const Vec<D> b_grad_j = apply<D>(p_.correction[j], grad);
+      const Vec<D> b_grad_j = corrected ? apply<D>(p_.correction[j], grad) : grad;
       own[j].rate += k.rate_j;
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) own[j].L[a][b] -= k.weighted_dv_j[a] * b_grad_j[b];

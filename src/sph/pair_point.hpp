@@ -29,6 +29,7 @@ struct PointFactors {
   std::vector<double> sum_density;         // eta_q (SphSystem::quadrature_density)
   std::vector<double> inverse_density;     // 1 / eta_q
   std::vector<double> volume;              // m / eta_q, m^3 (m^2 per radian x 2 pi in r-z)
+  std::vector<double> inverse_radius;      // r-z: 1 / |r|, 1/m (inverse_ring_radius), for the scalar force row
   std::vector<unsigned char> has_tensile;  // the artificial stress R is not zero
   std::vector<PairPoint<D>> packed;        // the SIMD loops' records (kernel correction off)
 };

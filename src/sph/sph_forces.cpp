@@ -58,6 +58,7 @@ void SphSystem<D>::size_point_factors() {
   factors_.sum_density.resize(total);
   factors_.inverse_density.resize(total);
   factors_.volume.resize(total);
+  if (mode_ == GeometryMode::axisymmetric) factors_.inverse_radius.resize(total);
   factors_.has_tensile.resize(total);
   // The SIMD pair loops (no kernel correction) read the packed records, filled in the same pass.
   if (!options_.kernel_correction) factors_.packed.resize(total);
@@ -72,7 +73,8 @@ void SphSystem<D>::fill_point_factors(FactorPass pass) {
   // The arrays are read by the scalar rows (kernel correction; r-z with the smoothed hoop term)
   // and, after the force pass, by the kick's axis-image work (r-z); has_tensile by the force rows
   // and that work. The kinematics rows on lanes read the first line of the packed record and eta.
-  const bool arrays = options_.kernel_correction || mode_ == GeometryMode::axisymmetric;
+  const bool axisymmetric = mode_ == GeometryMode::axisymmetric;
+  const bool arrays = options_.kernel_correction || axisymmetric;
   using P = PairPoint<D>;
 #pragma omp for schedule(static)
   for (std::size_t k = 0; k < total; ++k) {
@@ -82,6 +84,8 @@ void SphSystem<D>::fill_point_factors(FactorPass pass) {
       factors_.inverse_density[k] = 1.0 / eta_q;
       factors_.volume[k] = p_.mass[k] / eta_q;
     }
+    // The scalar force row's hoop shares read 1 / |r| of both points of every pair.
+    if (forces && axisymmetric) factors_.inverse_radius[k] = inverse_ring_radius(p_.position[k][0]);
     if (forces) {
       const SymTensor& r = p_.tensile_term[k];
       factors_.has_tensile[k] =
@@ -175,6 +179,7 @@ void SphSystem<D>::force_pass(bool write_rates) {
   const auto& eta = factors_.sum_density;  // eta_q: the pair weights (quadrature_density)
   const auto& h = p_.smoothing_length;
   const auto& inv_eta = factors_.inverse_density;
+  const auto& inv_r = factors_.inverse_radius;  // r-z: 1 / |r| (inverse_ring_radius)
   const PairViscosity<> fixed = pair_viscosity(options_, 0.0, 0.0);
   // One parallel region: the point factors (barrier), the rows, their sums (docs/performance.md,
   // "Fewer parallel regions").
@@ -217,15 +222,14 @@ void SphSystem<D>::force_pass(bool write_rates) {
         if (viscous.approaching) mu_max = std::max(mu_max, -mu);
         if (axisymmetric && options_.viscosity_hoop) {  // as force_row_lanes: the viscosity's hoop shares
           const auto shares = viscous_hoop_shares(viscous.dissipation[0], m[j], m[i], eta[j], eta[i],
-                                                  inverse_ring_radius(x[j][0]), inverse_ring_radius(x[i][0]));
+                                                  inv_r[j], inv_r[i]);
           viscous_hoop += shares.i;
           if (j < n) own[j].viscous_hoop += shares.j;
         }
         if (tensile && (factors_.has_tensile[i] | factors_.has_tensile[j])) {
           double fn = tensile_weight(w.shape * tensile_shape_inverse_, power, tensile_power_integer_);
           if (axisymmetric) {  // as force_row_lanes: the hoop weight, then the ring sign of an image
-            const auto shares = tensile_hoop_shares(dx[0], grad_a[0], fn, m[j], m[i], inverse_ring_radius(x[j][0]),
-                                                    inverse_ring_radius(x[i][0]));
+            const auto shares = tensile_hoop_shares(dx[0], grad_a[0], fn, m[j], m[i], inv_r[j], inv_r[i]);
             hoop_weight += shares.i;
             if (j < n) own[j].tensile_hoop_weight += shares.j;
             fn *= ring_sign(j);

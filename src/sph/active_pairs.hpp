@@ -44,11 +44,11 @@ class ActivePairs {
   std::int64_t extractions() const { return extractions_; }
 
  private:
-  std::vector<std::uint32_t> list_;    // the rows' j > i parts, one after another
-  std::vector<std::size_t> offset_;    // n + 1: row i's part is list_[offset_[i], offset_[i + 1])
-  std::vector<Vec<D>> x_;                 // m, positions at the extraction
-  std::vector<double> h_;                 // m, smoothing lengths at the extraction
-  std::int64_t builds_ = -1;              // cell-list build it was extracted from (-1: none)
+  std::vector<std::uint32_t> list_;  // the rows' j > i parts, one after another
+  std::vector<std::size_t> offset_;  // n + 1: row i's part is list_[offset_[i], offset_[i + 1])
+  std::vector<Vec<D>> x_;            // m, positions at the extraction
+  std::vector<double> h_;            // m, smoothing lengths at the extraction
+  std::int64_t builds_ = -1;         // cell-list build it was extracted from (-1: none)
   std::int64_t extractions_ = 0;
   double skin_ = 0.0;    // m, the thin skin asked for
   double margin_ = 0.0;  // m, the skin of the current extraction (<= skin_)

@@ -223,7 +223,7 @@ void SphSystem<D>::corrected_kinematics_row(std::size_t i, KinematicSum* own) {
       }
     }
     // Without the correction B is the identity: the gradient itself (r-z with the smoothed hoop
-    // term runs this row for its hoop sums only).
+    // term runs this row uncorrected, for the hoop sums the SIMD row does not have).
     const Vec<D> b_grad_i = corrected ? apply<D>(p_.correction[i], grad) : grad;
     mine.rate += k.rate_i;
     for (int a = 0; a < D; ++a)
